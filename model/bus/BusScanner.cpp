@@ -102,8 +102,7 @@ void BusScanner::start()
     m_effectiveWaitMs = waitMs();
     m_cursor = m_from;
     m_slave = 0;
-    m_previous = 0;
-    m_earlier = 0;
+    m_recent.clear();
     m_reasking = false;
     m_late.clear();
     m_answered.clear();
@@ -201,8 +200,10 @@ void BusScanner::handleReply(int profileIndex, bool confirming, const ModbusResu
         m_answered.insert(m_slave);
     // On a half-duplex line a late answer from the address before collides with this request:
     // both frames are garbled and the address before looked silent. Ask it again, with time.
-    if (info.state == DeviceInfo::State::Garbled && !m_reasking)
-        askAgainLater(m_previous);
+    // A whole frame from another address names its sender (noteLateAnswer()).
+    const bool senderKnown = result.error == ModbusError::WrongSlave && !result.reply.isEmpty();
+    if (info.state == DeviceInfo::State::Garbled && !m_reasking && !senderKnown)
+        askRecentAgain();
     // A single corrupt frame may be noise; two drives answering at once garble every reply.
     const bool confirm = info.state == DeviceInfo::State::Garbled && !confirming;
     // A device that refuses this family's read may be of another family.
@@ -263,11 +264,10 @@ void BusScanner::noteLateAnswer(const ModbusResult& result)
 {
     // A garbled frame thrown away before a request went out, or while the line was drained
     // after one: a reply met a request on the line after both their waits (a slow drive, a busy
-    // machine). Its sender and the address the request asked were the two asked before.
+    // machine). Its sender and the address the request asked were among those asked just before.
     if (result.discardedGarbled) {
         qCDebug(lcModel) << "scan: a garbled frame was discarded while asking" << m_slave;
-        askAgainLater(m_previous);
-        askAgainLater(m_earlier);
+        askRecentAgain();
     }
     // A reply from an address already passed as silent: that drive answers slower than the
     // wait. Its reply spoiled this request; ask it again with a longer wait rather than lose it.
@@ -295,9 +295,29 @@ void BusScanner::askAgainLater(int slave)
     if (slave < m_from || slave >= m_cursor || slave == m_slave || known ||
         m_late.contains(slave) || m_reasks.value(slave) >= kIdentifyRetries)
         return;
-    ++m_lateAnswers;
+    // Asked again with a long wait, its silence is sure: no longer suspect.
+    m_recent.erase(std::remove_if(m_recent.begin(), m_recent.end(),
+                                  [slave](const Asked& a) { return a.slave == slave; }),
+                   m_recent.end());
     ++m_reasks[slave];
     m_late << slave;
+}
+
+double BusScanner::suspectWindowMs() const
+{
+    return std::max(double(kSuspectWindowMs), 4.0 * m_effectiveWaitMs);
+}
+
+void BusScanner::askRecentAgain()
+{
+    // Counted back from when the current address was asked: its own wait may be long.
+    const double fromMs = m_askedAtMs - suspectWindowMs();
+    QVector<int> suspects;
+    for (const Asked& a : m_recent)
+        if (a.atMs >= fromMs)
+            suspects << a.slave;
+    for (int slave : suspects)
+        askAgainLater(slave); // removes it from m_recent
 }
 
 void BusScanner::addressDone(DeviceInfo info)
@@ -309,6 +329,7 @@ void BusScanner::addressDone(DeviceInfo info)
         if (!info.line.isSet() && m_client->hasOwnLine(info.slave))
             info.line = m_client->driveLine(info.slave);
         if (m_reasking && info.state != DeviceInfo::State::IdentifyFailed) {
+            ++m_lateAnswers;
             const QString late = tr("answered late at first (after the %1 ms wait); a longer "
                                     "wait makes scans of this bus reliable")
                                      .arg(m_effectiveWaitMs);
@@ -320,8 +341,14 @@ void BusScanner::addressDone(DeviceInfo info)
         m_devices.insert(at, info);
         emit found(info);
     }
-    if (!m_reasking)
+    if (!m_reasking) {
+        if (info.state == DeviceInfo::State::Absent)
+            m_recent.append({m_slave, m_askedAtMs});
+        const double keepFromMs = m_askedAtMs - 2 * suspectWindowMs();
+        while (!m_recent.isEmpty() && m_recent.first().atMs < keepFromMs)
+            m_recent.removeFirst();
         emit progress(m_done, total(), m_slave);
+    }
     nextAddress();
 }
 
@@ -333,13 +360,11 @@ void BusScanner::nextAddress()
         finish();
         return;
     }
-    // A late reply of the addresses asked just before may meet the next request; one asked
-    // again had a long wait, so its reply is not suspected.
-    const int asked = m_reasking ? 0 : m_slave;
+    // A late reply of the addresses asked just before may meet the next request (m_recent); one
+    // asked again had a long wait, so its reply is not suspected.
     m_reasking = !m_late.isEmpty();
-    m_earlier = m_previous;
-    m_previous = asked;
     m_slave = m_reasking ? m_late.takeFirst() : m_cursor++;
+    m_askedAtMs = elapsedMs();
     askProfile(0, false);
 }
 

@@ -36,6 +36,8 @@ public:
     static constexpr double kAnswerBudgetMs = 10.0;
     // Times an address that answered is asked again before it is reported unidentified.
     static constexpr int kIdentifyRetries = 3;
+    // How far back a garbled frame makes silent addresses suspect: several waits, at least this.
+    static constexpr int kSuspectWindowMs = 120;
 
     BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
     ~BusScanner() override;
@@ -73,8 +75,9 @@ public:
     int scannedCount() const { return m_done; }
     int total() const { return m_to - m_from + 1; }
     int requestsSent() const { return m_requests; }
-    // Addresses asked again with a longer wait: a reply from them came after their wait, or a
-    // garbled frame came while the next address was asked (a late reply colliding with it).
+    // Drives found only when asked again with a longer wait: a reply from them came after their
+    // wait, or a garbled frame came soon after they were asked (a late reply colliding with a
+    // later request).
     int lateAnswers() const { return m_lateAnswers; }
     // The addresses among `devices` that answered but could not be identified.
     static QVector<int> unidentified(const QVector<DeviceInfo>& devices);
@@ -95,6 +98,8 @@ private:
     void handleReply(int profileIndex, bool confirming, const ModbusResult& result);
     void noteLateAnswer(const ModbusResult& result);
     void askAgainLater(int slave);
+    void askRecentAgain();
+    double suspectWindowMs() const;
     int requestTimeoutMs(int profileIndex, bool confirming) const;
     // The address answered before; its identification has just failed.
     DeviceInfo identificationFailed(DeviceInfo info);
@@ -115,9 +120,18 @@ private:
     int m_waitMs = 0;
     LineFormat m_line;
     int m_effectiveWaitMs = 0;
-    int m_cursor = 1;                  // the next address of the pass through the range
-    int m_slave = 0;                   // the address being asked
-    int m_previous = 0, m_earlier = 0; // asked before it with a short wait (0: none)
+    int m_cursor = 1; // the next address of the pass through the range
+    int m_slave = 0;  // the address being asked
+    // Addresses asked with a short wait and judged silent, with when they were asked: a garbled
+    // frame may be any of their late replies meeting a later request (a drive slower than the
+    // wait, a busy machine), not only the one before's.
+    struct Asked
+    {
+        int slave;
+        double atMs;
+    };
+    QVector<Asked> m_recent;
+    double m_askedAtMs = 0; // when m_slave's first request went out
     bool m_reasking = false;
     QVector<int> m_late;       // answered after the wait: to be asked again
     QSet<int> m_answered;      // sent a whole frame of some kind (an exception, a late reply)

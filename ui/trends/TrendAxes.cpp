@@ -40,7 +40,7 @@ void TrendAxes::setQuantities(const QVector<QPair<QString, QString>>& quantities
         }
         const QString names = labels.join(QStringLiteral(", "));
         if (unit.isEmpty()) {
-            sides[u == 0 ? 0 : 1] << QStringList{names, names, names};
+            sides[u == 0 ? 0 : 1] << QStringList{names, names, names, names};
             continue;
         }
         // Too long for the axis: the word the labels share ("Current speed", "Target speed"
@@ -49,15 +49,17 @@ void TrendAxes::setQuantities(const QVector<QPair<QString, QString>>& quantities
         const QString bare = tr("[%1]").arg(unit);
         sides[u == 0 ? 0 : 1] << QStringList{
             tr("%1 [%2]").arg(names, unit),
-            shared.isEmpty() ? bare : tr("%1 [%2]").arg(shared, unit), bare};
+            shared.isEmpty() ? bare : tr("%1 [%2]").arg(shared, unit), bare, unit};
     }
     for (int side = 0; side < 2; ++side) {
-        m_titles[side] = QStringList{QString(), QString(), QString()};
-        for (int level = 0; level < 3; ++level) {
+        m_titles[side] = QStringList{QString(), QString(), QString(), QString()};
+        for (int level = 0; level < 4; ++level) {
             QStringList parts;
             for (const QStringList& t : sides[side])
                 parts << t[level];
-            m_titles[side][level] = parts.join(QStringLiteral(" / "));
+            // The last, shortest: the units alone, without brackets or spaces ("%/A").
+            m_titles[side][level] =
+                parts.join(level == 3 ? QStringLiteral("/") : QStringLiteral(" / "));
         }
     }
     m_axes[1]->setVisible(m_units.size() > 1);

@@ -36,7 +36,8 @@ private:
     std::array<QValueAxis*, 2> m_axes;
     QStringList m_units;
     // Each side's titles from the longest to the shortest: the quantities and unit, the word
-    // they share and the unit, the unit alone; the longest that fits the plot is shown.
+    // they share and the unit, the unit in brackets, the unit alone; the longest that fits
+    // the plot is shown.
     std::array<QStringList, 2> m_titles;
 };
 

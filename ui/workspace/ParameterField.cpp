@@ -39,18 +39,6 @@ QString anyLabel(const ParameterMeta& meta, qint64 code)
     return QString::number(code);
 }
 
-// A communication error code the drive holds (the DBU's E0h-E8h), in words with what to do: a
-// number alone tells a field engineer nothing. Empty for 0, other codes and other values.
-QString codeMeaning(const DeviceParameters& parameters, const ParameterMeta& meta,
-                    const ParamValue& value)
-{
-    const CodeTable* table =
-        meta.codeTable.isEmpty() ? nullptr : parameters.profile().codeTable(meta.codeTable);
-    const CodeEntry* entry =
-        table && value.valid && qint64(value.raw) != 0 ? table->find(qint64(value.raw)) : nullptr;
-    return entry && entry->exceptionCode != 0 ? entry->explained() : QString();
-}
-
 } // namespace
 
 ParameterField::ParameterField(DeviceParameters* parameters, const QString& name, QWidget* parent)
@@ -296,15 +284,11 @@ void ParameterField::applyStyle()
     // In words at the field, not only in a tooltip.
     // An allowed value outside the recommended range: said at the field too, in amber.
     const QString warning = this->warning();
-    const QString meaning = problem.isEmpty() && warning.isEmpty()
-                                ? codeMeaning(*m_parameters, *e->meta, e->device)
-                                : QString();
-    const QString message = problem.isEmpty() ? (warning.isEmpty() ? meaning : warning)
+    const QString message = problem.isEmpty() ? warning
                             : e->state == DeviceParameters::State::Invalid || !m_problem.isEmpty()
                                 ? tr("Not accepted: %1").arg(problem)
                                 : problem;
-    const QString messageStyle = !meaning.isEmpty() ? QStringLiteral("color: palette(text);")
-                                 : problem.isEmpty() && !warning.isEmpty()
+    const QString messageStyle = problem.isEmpty() && !warning.isEmpty()
                                      ? QStringLiteral("color: #a05000;")
                                      : QStringLiteral("color: #b01c1c;");
     if (m_message->styleSheet() != messageStyle)

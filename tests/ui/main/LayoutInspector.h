@@ -91,7 +91,8 @@ public:
             seen &= p->parentWidget()->rect();
         }
         const QRect whole(w->mapTo(w->window(), QPoint(0, 0)), w->size());
-        if (seen == whole)
+        // A pixel or two of a widget's own frame or padding under an edge hides nothing.
+        if (seen.width() >= whole.width() - 2 && seen.height() >= whole.height() - 2)
             return QString();
         return QStringLiteral("only %1×%2 px of %3×%4 in sight without scrolling")
             .arg(std::max(0, seen.width()))

@@ -188,4 +188,3 @@ TEST_F(MainWindowDockLayoutTest, WindowsTheMenusOpenLeaveStopAllVisible)
     editor->close();
     EXPECT_TRUE(problems.isEmpty()) << qPrintable(report());
 }
-

@@ -31,6 +31,9 @@ TEST(TrendAxesTest, TitlesNameQuantitiesAndUnitAndShortenKeepingTheUnit)
               right.horizontalAdvance(QStringLiteral("Load rate [%]")) < shorter
                   ? QStringLiteral("Load rate [%]")
                   : QStringLiteral("[%]"));
+    // Shorter still: the units without brackets, the right side's joined by a slash.
+    axes.fitTitles(1);
+    EXPECT_EQ(axes.axis(0)->titleText(), QStringLiteral("r/min"));
     EXPECT_EQ(TrendAxes::sharedWord({QStringLiteral("Motor current"), QStringLiteral("PWM duty")}),
               QString());
 }
