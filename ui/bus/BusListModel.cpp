@@ -85,7 +85,7 @@ QVariant BusListModel::headerData(int section, Qt::Orientation orientation, int 
     case MachineNumber:
         return tr("No."); // short: the list shows every column whole beside the pages
     case Switches:
-        return tr("Address switches");
+        return tr("Switches"); // short: the header's tooltip says which and how
     case Family:
         return tr("Family");
     case Model:
@@ -125,7 +125,9 @@ QVariant BusListModel::display(const DeviceInfo& d, int column) const
     case MachineNumber:
         return d.slave;
     case Switches:
-        return DeviceInfo::addressText(d.slave, d.family);
+        // The positions only: the number itself (and its hex form, in the tooltip and the page
+        // header) is beside it, and the list must show every column whole on a laptop.
+        return DeviceInfo::switchText(d.slave, d.family);
     case Family:
         if (d.line.isSet()) // a drive of its own format: the list says which
             return tr("%1 at %2")
@@ -176,7 +178,8 @@ QString BusListModel::toolTip(const DeviceInfo& d, int column) const
             .arg(StaleLook::ageText(state, s.lastAnswer, now));
     }
     case Switches:
-        return DeviceInfo::switchHelp(d.family);
+        return DeviceInfo::addressText(d.slave, d.family) + QLatin1Char('\n') +
+               DeviceInfo::switchHelp(d.family);
     case Name:
         return d.machineName.isEmpty()
                    ? tr("No name yet: Name… in the context menu (F2) names this machine")

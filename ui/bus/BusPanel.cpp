@@ -117,10 +117,18 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     for (int column :
          {BusListModel::Name, BusListModel::Model, BusListModel::State, BusListModel::Priority})
         header->moveSection(header->visualIndex(column), to++);
-    // A long name is shortened (the tooltip has it whole), not the state beside it.
+    // A long name is shortened (the tooltip has it whole), not the state beside it; no names,
+    // no room taken.
     header->setSectionResizeMode(BusListModel::Name, QHeaderView::Interactive);
-    header->resizeSection(BusListModel::Name,
-                          m_view->fontMetrics().horizontalAdvance(QStringLiteral("Infeed 3")) + 20);
+    fitNameColumn();
+    for (auto signal : {&QAbstractItemModel::rowsInserted, &QAbstractItemModel::rowsRemoved})
+        connect(m_model, signal, this, &BusPanel::fitNameColumn);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &BusPanel::fitNameColumn);
+    connect(m_model, &QAbstractItemModel::dataChanged, this,
+            [this](const QModelIndex& first, const QModelIndex& last) {
+                if (first.column() <= BusListModel::Name && last.column() >= BusListModel::Name)
+                    fitNameColumn();
+            });
     m_view->setTextElideMode(Qt::ElideRight);
     m_view->setWordWrap(false); // one line a drive, shortened where narrow
     m_view->setAccessibleName(tr("Drives on the bus"));
@@ -345,6 +353,18 @@ void BusPanel::showMessage(const QString& text, bool problem)
 {
     m_message->setText(text);
     m_message->setStyleSheet(problem ? QStringLiteral("color: #b01c1c;") : QString());
+}
+
+void BusPanel::fitNameColumn()
+{
+    QHeaderView* header = m_view->horizontalHeader();
+    const int widest = m_view->fontMetrics().horizontalAdvance(QStringLiteral("Infeed 3")) + 20;
+    int wanted = header->sectionSizeHint(BusListModel::Name);
+    for (int row = 0; row < m_model->rowCount(); ++row) {
+        const QString name = m_model->index(row, BusListModel::Name).data().toString();
+        wanted = std::max(wanted, m_view->fontMetrics().horizontalAdvance(name) + 20);
+    }
+    header->resizeSection(BusListModel::Name, std::min(wanted, widest));
 }
 
 void BusPanel::updateButtons()

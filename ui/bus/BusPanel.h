@@ -69,6 +69,7 @@ private:
     void syncDrive(int slave);
     void showMessage(const QString& text, bool problem = false);
     void updateButtons();
+    void fitNameColumn();
     void showContextMenu(const QPoint& pos);
 
     BusDrives* m_drives;

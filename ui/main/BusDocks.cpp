@@ -15,6 +15,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QTableView>
+#include <QTimer>
 #include <algorithm>
 
 namespace opentop {
@@ -45,6 +46,20 @@ BusDocks::BusDocks(QMainWindow* window, TrafficLog* log)
     window->tabifyDockWidget(trafficDock, dock(QStringLiteral("overviewDock")));
     window->tabifyDockWidget(trafficDock, dock(QStringLiteral("trendDock")));
     window->tabifyDockWidget(trafficDock, dock(QStringLiteral("groupsDock")));
+    // The first time the bottom opens it takes a fifth of the window: the page above keeps
+    // its live values in sight on a laptop. The user's own dragging is kept after that.
+    for (QDockWidget* d : window->findChildren<QDockWidget*>()) {
+        connect(d, &QDockWidget::visibilityChanged, this, [this, d](bool visible) {
+            if (!visible || m_bottomSized || d->isFloating() ||
+                m_window->dockWidgetArea(d) != Qt::BottomDockWidgetArea)
+                return;
+            m_bottomSized = true;
+            const int height = std::clamp(m_window->height() / 5, 140, 320);
+            QTimer::singleShot(0, d, [window = m_window, d, height] {
+                window->resizeDocks({d}, {height}, Qt::Vertical);
+            });
+        });
+    }
 }
 
 QDockWidget* BusDocks::dock(const QString& name) const

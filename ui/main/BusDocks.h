@@ -46,6 +46,7 @@ private:
     BusOverview* m_overview = nullptr;
     TrendPanel* m_trends = nullptr;
     GroupsView* m_groupsView = nullptr;
+    bool m_bottomSized = false; // the bottom docks were given their first height
 };
 
 } // namespace opentop

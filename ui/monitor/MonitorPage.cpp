@@ -16,6 +16,7 @@
 #include "widgets/StaleLook.h"
 #include "widgets/StatusLight.h"
 
+#include <QEvent>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -87,7 +88,9 @@ MonitorPage::MonitorPage(MonitorHub* hub, DeviceParameters* parameters, QWidget*
     splitter->setChildrenCollapsible(false);
     splitter->addWidget(m_chart);
     splitter->setStretchFactor(1, 1);
-    m_splitter = splitter; // divided when first shown, at its height
+    m_splitter = splitter; // divided when shown and when its height changes, until dragged
+    splitter->installEventFilter(this);
+    connect(splitter, &QSplitter::splitterMoved, this, [this] { m_userDivided = true; });
     layout->addWidget(splitter, 1);
 
     m_chart->setSources(TrendDefaults::forDrive(parameters->profile(), m_slave));
@@ -153,19 +156,27 @@ void MonitorPage::showEvent(QShowEvent* event)
     divide();
 }
 
+bool MonitorPage::eventFilter(QObject* watched, QEvent* event)
+{
+    // A dock opened below, a status line more above: divided again for the new height.
+    if (watched == m_splitter && event->type() == QEvent::Resize)
+        QTimer::singleShot(0, this, &MonitorPage::divide);
+    return QWidget::eventFilter(watched, event);
+}
+
 void MonitorPage::divide()
 {
     // Once the values are all there (built at the first sample) and the page has its height:
     // the values first, whole if they fit in three fifths (the lamps in sight on a laptop's
-    // screen) and leave the chart 200 px, the chart the rest.
-    if (m_divided || !m_details->isBuilt() || !isVisible() || m_splitter->height() < 200)
+    // screen) and leave the chart 200 px or half, the chart the rest.
+    if (m_userDivided || !m_details->isBuilt() || !isVisible() || m_splitter->height() < 200)
         return;
-    m_divided = true;
     const int height = m_splitter->height();
     const auto* values = static_cast<QScrollArea*>(m_splitter->widget(0));
     const int wanted = values->widget()->sizeHint().height() + 4;
-    // The chart keeps 200 px where the page has them: shorter, its axes lose their titles.
-    const int top = std::min({wanted, height * 3 / 5, std::max(height * 2 / 5, height - 200)});
+    // The chart keeps 200 px where the page has them (shorter, its axes lose their titles);
+    // on a short page the two share it half and half.
+    const int top = std::min({wanted, height * 3 / 5, std::max(height / 2, height - 200)});
     m_splitter->setSizes({top, height - top});
 }
 

@@ -55,6 +55,7 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
     // Divides the height between the values and the chart, once.
     void divide();
     void hideEvent(QHideEvent* event) override;
@@ -85,7 +86,7 @@ private:
     StaleLook* m_look = nullptr;
     QString m_lastError;
     QSplitter* m_splitter = nullptr; // the values above, the chart below
-    bool m_divided = false;          // the splitter divided at its first showing
+    bool m_userDivided = false;      // the user dragged the splitter: kept from then on
     std::optional<MonitorSample> m_last;
     int m_samples = 0;
     QTimer m_displayChanged; // the speed display settings were read or written again

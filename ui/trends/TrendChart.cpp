@@ -61,7 +61,7 @@ TrendChart::TrendChart(MonitorHub* hub, QWidget* parent)
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
     // A chart still, in a dock on a laptop, also where CJK text makes every row taller: its
     // plot tall enough for the unit on its axes (TrendAxes::fitTitles).
-    m_view->setMinimumSize(320, 154);
+    m_view->setMinimumSize(320, 140);
 
     m_readout->setTextFormat(Qt::PlainText);
     m_readout->setWordWrap(true);

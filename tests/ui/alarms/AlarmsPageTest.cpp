@@ -300,7 +300,8 @@ TEST_F(AlarmBusTest, ExportWritesTheFileOfAllDrives)
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QString text = QString::fromUtf8(file.readAll());
     EXPECT_EQ(text, AlarmExport::csv(exporter.reports()));
-    EXPECT_TRUE(text.contains(QStringLiteral("2,DBU400-D,alarm,1,01h,AL001,Overvoltage")));
+    // Machine, its name (none given), model, kind, record, code, panel code, name.
+    EXPECT_TRUE(text.contains(QStringLiteral("2,,DBU400-D,alarm,1,01h,AL001,Overvoltage")));
 }
 
 TEST_F(AlarmBusTest, ExportToAFifoWritesThroughItAndToAMissingFolderFails)

@@ -124,7 +124,7 @@ TEST_F(BusPanelTest, ScanFindsTheDrivesAndFillsTheProgressBar)
     EXPECT_EQ(drives->slaves(), (QVector<int>{1, 7, 150}));
     ASSERT_EQ(model()->rowCount(), 3);
     EXPECT_EQ(text(150, BusListModel::MachineNumber), QStringLiteral("150"));
-    EXPECT_EQ(text(150, BusListModel::Switches), QStringLiteral("96h  SW1=9 SW2=6"));
+    EXPECT_EQ(text(150, BusListModel::Switches), QStringLiteral("SW1=9 SW2=6"));
     EXPECT_EQ(text(7, BusListModel::Family), QStringLiteral("DCPID"));
     EXPECT_EQ(text(1, BusListModel::Model), QStringLiteral("DBU — variant unknown"));
     EXPECT_TRUE(text(1, BusListModel::Firmware).startsWith(QStringLiteral("V")));
@@ -174,7 +174,9 @@ TEST_F(BusPanelTest, AGarbledAddressIsFlaggedWithWhatToCheck)
     EXPECT_EQ(data(3, BusListModel::MachineNumber, Qt::ForegroundRole).value<QBrush>().color(),
               QColor(0xb0, 0x1c, 0x1c));
     const QString tip = data(3, BusListModel::State, Qt::ToolTipRole).toString();
-    EXPECT_TRUE(tip.contains(QStringLiteral("SW1/SW2"))) << qPrintable(tip);
+    // What to check, with the switch positions of this number for each family.
+    EXPECT_TRUE(tip.contains(QStringLiteral("SW1=0 SW2=3"))) << qPrintable(tip);
+    EXPECT_TRUE(tip.contains(QStringLiteral("DIP ON: 1,2"))) << qPrintable(tip);
     EXPECT_TRUE(tip.contains(QStringLiteral("machine number 3"))) << qPrintable(tip);
 }
 

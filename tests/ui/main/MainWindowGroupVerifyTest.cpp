@@ -6,6 +6,8 @@
 #include "MainWindowGroupsFixture.h"
 #include "workspace/MultiDriveWriteDialog.h"
 
+#include <QLabel>
+
 using namespace opentop;
 using namespace opentop::test;
 
@@ -74,7 +76,12 @@ TEST_F(MainWindowGroupVerifyTest, AValueAChildDoesNotAllowIsRefusedNamingItAndNo
         << qPrintable(speed->problem());
     EXPECT_TRUE(speed->problem().contains(QStringLiteral("0 or 300–3000 r/min")))
         << qPrintable(speed->problem());
-    EXPECT_TRUE(speed->messageLabel()->isVisible());
+    // Shown on the grid's own message line, under the grid (it never moves the rows).
+    auto* line = page->findChild<QLabel*>(QStringLiteral("fieldMessages"));
+    ASSERT_NE(line, nullptr);
+    EXPECT_TRUE(line->isVisible());
+    EXPECT_TRUE(line->text().contains(QStringLiteral("machine number 150")))
+        << qPrintable(line->text());
     page->writePage();
     EXPECT_TRUE(page->statusText().startsWith(QStringLiteral("Nothing was written")))
         << qPrintable(page->statusText());
@@ -177,7 +184,7 @@ TEST_F(MainWindowGroupVerifyTest, TheStartQuestionNamesTheChildInIoPriorityAndTh
     // Its E2h is explained in words, with what to do.
     EXPECT_TRUE(report.contains(QStringLiteral("E2h Cannot execute command: ")))
         << qPrintable(report);
-    EXPECT_TRUE(report.contains(QStringLiteral("set its Control priority setting to "
+    EXPECT_TRUE(report.contains(QStringLiteral("set Control priority (Core parameters) to "
                                                "Communication priority")))
         << qPrintable(report);
     EXPECT_TRUE(panel->messageText().contains(QStringLiteral("Not every drive")))

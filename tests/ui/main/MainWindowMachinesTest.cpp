@@ -195,7 +195,7 @@ TEST_F(MainWindowMachinesTest, EachFamilyShowsItsOwnAddressSwitches)
     auto cell = [&](int slave) {
         return model->index(model->rowOf(slave), BusListModel::Switches).data().toString();
     };
-    EXPECT_EQ(cell(150), QStringLiteral("96h  SW1=9 SW2=6"));
+    EXPECT_EQ(cell(150), QStringLiteral("SW1=9 SW2=6"));
     EXPECT_EQ(cell(7), QStringLiteral("DIP ON: 1,2,3"));
     const QString tip =
         model->headerData(BusListModel::Switches, Qt::Horizontal, Qt::ToolTipRole).toString();
@@ -206,18 +206,21 @@ TEST_F(MainWindowMachinesTest, EachFamilyShowsItsOwnAddressSwitches)
     ASSERT_TRUE(waitFor([&] {
         return window->workspace()->titleText().contains(QStringLiteral("DIP ON: 1,2,3"));
     })) << qPrintable(window->workspace()->titleText());
-    // Add drive says how each family sets the number.
-    QString label;
-    whenModal([](QWidget* w) { return w->objectName() == QLatin1String("driveLineDialog"); },
-              [&label](QWidget* w) {
-                  if (auto* help = w->findChild<QLabel*>(QStringLiteral("switchHelp")))
-                      label = help->text();
-                  qobject_cast<QDialog*>(w)->reject();
-              });
+    // Add drive says how each family sets the number (a window-modal dialog that does not
+    // block: read when it shows).
     for (QPushButton* b : window->busPanel()->findChildren<QPushButton*>()) {
-        if (b->text() == QLatin1String("A&dd drive…"))
+        if (b->text() == QStringLiteral("A&dd drive…"))
             b->click();
     }
+    QDialog* dialog = nullptr;
+    ASSERT_TRUE(waitFor([&] {
+        dialog = window->findChild<QDialog*>(QStringLiteral("driveLineDialog"));
+        return dialog && dialog->isVisible();
+    }));
+    auto* help = dialog->findChild<QLabel*>(QStringLiteral("switchHelp"));
+    ASSERT_NE(help, nullptr);
+    const QString label = help->text();
+    dialog->reject();
     EXPECT_TRUE(label.contains(QStringLiteral("SW1 and SW2"))) << qPrintable(label);
     EXPECT_TRUE(label.contains(QStringLiteral("DIP switches 1–7"))) << qPrintable(label);
 }

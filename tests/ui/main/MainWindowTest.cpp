@@ -21,7 +21,7 @@ TEST_F(MainWindowTest, ConfiguredDrivesAreIdentifiedWithTheirVariants)
     const int row = model->rowOf(150);
     ASSERT_GE(row, 0);
     EXPECT_EQ(model->index(row, BusListModel::Switches).data().toString(),
-              QStringLiteral("96h  SW1=9 SW2=6"));
+              QStringLiteral("SW1=9 SW2=6"));
 }
 
 TEST_F(MainWindowTest, SelectingADriveOpensItsPagesAndAnEditReachesTheDrive)

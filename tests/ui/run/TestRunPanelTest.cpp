@@ -28,6 +28,12 @@ protected:
             info.slave = d.first;
             info.state = DeviceInfo::State::Present;
             info.family = d.second;
+            // As a scan leaves it: the simulated DBU reports no variant, the bus spec names it
+            // (no variant question before a start).
+            for (const QString& entry : spec.split(QLatin1Char(',')))
+                if (entry.endsWith(QStringLiteral("@%1").arg(d.first)) &&
+                    entry.startsWith(d.second) && !entry.startsWith(d.second + QLatin1Char('@')))
+                    info.variant = entry.section(QLatin1Char('@'), 0, 0);
             busDrives->update(info);
         }
     }
