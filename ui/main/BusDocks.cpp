@@ -54,12 +54,30 @@ BusDocks::BusDocks(QMainWindow* window, TrafficLog* log)
                 m_window->dockWidgetArea(d) != Qt::BottomDockWidgetArea)
                 return;
             m_bottomSized = true;
-            const int height = std::clamp(m_window->height() / 5, 140, 320);
-            QTimer::singleShot(0, d, [window = m_window, d, height] {
-                window->resizeDocks({d}, {height}, Qt::Vertical);
+            QTimer::singleShot(0, d, [window = m_window, d] {
+                window->resizeDocks({d}, {firstHeight(window)}, Qt::Vertical);
             });
         });
     }
+}
+
+int BusDocks::firstHeight(QMainWindow* window)
+{
+    // Never below what a dock's contents need: their minimum, and what their wrapped texts
+    // need more at the window's width (longer in some languages).
+    int needed = 0;
+    for (QDockWidget* d : window->findChildren<QDockWidget*>()) {
+        if (window->dockWidgetArea(d) != Qt::BottomDockWidgetArea || !d->widget())
+            continue;
+        int wrapped = 0;
+        for (QLabel* label : d->widget()->findChildren<QLabel*>()) {
+            if (label->wordWrap() && !label->text().isEmpty())
+                wrapped += std::max(0, label->heightForWidth(window->width() - 40) -
+                                           label->minimumSizeHint().height());
+        }
+        needed = std::max(needed, d->minimumSizeHint().height() + wrapped);
+    }
+    return std::max(std::clamp(window->height() / 5, 140, 320), needed);
 }
 
 QDockWidget* BusDocks::dock(const QString& name) const

@@ -28,6 +28,8 @@ public:
     BusDocks(QMainWindow* window, TrafficLog* log);
 
     QDockWidget* dock(const QString& name) const;
+    // The bottom docks' height when first opened: a fifth of the window, or what they need.
+    static int firstHeight(QMainWindow* window);
     // The live views of a connection's bus, in place of "Not connected".
     void fill(BusDrives* drives, MonitorHub* hub, BusGroupTracker* groups, BusPanel* panel);
     // Back to "Not connected" (the views are deleted).
