@@ -86,107 +86,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="69"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="70"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="89"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="90"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="92"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="94"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="95"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="97"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="98"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="104"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="105"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="108"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="109"/>
         <source>%1: no records.</source>
         <translation>%1: 履歴なし。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="111"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="112"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: %3 件中 %2 件（新しい順）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>#</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Panel</source>
         <translation>パネル表示</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="123"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="124"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="130"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="131"/>
         <source>Cause: %1</source>
         <translation>原因: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="133"/>
         <source>Remedy: %1</source>
         <translation>対策: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="135"/>
         <source>To clear: %1</source>
         <translation>解除方法: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="140"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="141"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通信エラーレジスタ (%1): 読み出せません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="144"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="145"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通信エラーレジスタ (%1): なし (0)。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="147"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="148"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通信エラーレジスタ (%1): %2（既知のコードではありません）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="151"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="152"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -260,192 +260,192 @@
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="49"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
         <source>top level</source>
         <translation>最上位</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="54"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; は 1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="62"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; は小文字の ID でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="70"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="72"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity は N、E、O のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud は 1200–115200、stopBits は 1 または 2 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="86"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="88"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats: &quot;%1&quot; は 8N1 や 8E1 のような形式ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="92"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats には既定の形式 %1 が含まれている必要があります</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="96"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs は 0–60000 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="107"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters は 1–125、maxWriteRegisters は 1–123 です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves は 1–247 の範囲でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="124"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] には id、model、label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot; が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="137"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="139"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] には一意の id と label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="148"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="150"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] には function 3 または 4 と first ≤ last が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="192"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
         <source>%1 has no name</source>
         <translation>%1 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset は %2 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="197"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="199"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: コード %2 が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot; はコマンドパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="220"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 初期値が許容値に含まれていません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="224"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: ビットフィールド &quot;%2&quot;: function &quot;%3&quot; は読出し可能なパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot; に対する条件です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2 のときは初期値が許容されません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="243"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 がアドレス 0xFFFF を超えています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 が 0x%3 で &quot;%2&quot; と重なっています（%4 レジスタ）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="270"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot; は identify の読出し範囲内のパラメータでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="273"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch が正しい正規表現ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="285"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="313"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 はパラメータ名、名前のリスト、またはオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="322"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot; にビットフィールド &quot;%3&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="328"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2 は &quot;%3&quot; で書き込める値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="346"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs には &quot;selected&quot; ロールが必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 には &quot;selected&quot; と &quot;maxSeconds&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="365"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2 は &quot;selected&quot; ロールの値ではないか、重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="370"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot; は 0 より大きく 600 以下でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="402"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot; は %2 のいずれかで、それぞれ 1 回だけでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="405"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot; は #rrggbb でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot; と &quot;meaning&quot; は空にできません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="57"/>
         <source> and %1 more</source>
         <translation> ほか %1 件</translation>
     </message>
@@ -471,6 +471,29 @@
         <location filename="../ui/help/AboutDialog.cpp" line="45"/>
         <source>About &amp;Qt</source>
         <translation>Qt について(&amp;Q)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AddressSwitches</name>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="66"/>
+        <source>address.names: every switch needs a name</source>
+        <translation>address.names: すべてのスイッチに名前が必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="74"/>
+        <source>address.switches must be &quot;hex-rotary&quot; or &quot;binary-dip&quot;</source>
+        <translation>address.switches は &quot;hex-rotary&quot; または &quot;binary-dip&quot; でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="78"/>
+        <source>address.names: 1–%1 switches for this notation</source>
+        <translation>address.names: この表記ではスイッチは 1–%1 個です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="81"/>
+        <source>address: the switches (%1) cannot set machine number %2</source>
+        <translation>address: このスイッチ (%1) では局番 %2 を設定できません</translation>
     </message>
 </context>
 <context>
@@ -526,84 +549,89 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Machine</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Kind</source>
         <translation>種別</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Record</source>
         <translation>履歴</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
         <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <source>Machine name</source>
+        <translation>機械名</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Panel code</source>
         <translation>パネル表示コード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Remedy</source>
         <translation>対策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="49"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="58"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="59"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="105"/>
         <source>machine %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="128"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>%1 台のドライバの履歴 %n 件を %2 に書き込みました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="133"/>
         <source>Not everything could be read: %1</source>
         <translation>一部を読み出せませんでした: %1</translation>
     </message>
@@ -678,92 +706,92 @@
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="163"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="164"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>アラーム・警告履歴を原因・対策とともに表示、リセット、消去</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="170"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="171"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか電源再投入が必要かを表示します（--yes が必要。解除されない場合は終了コード 4）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>アラーム履歴と警告履歴を消去します（--yes が必要）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>--reset と --clear-records を確定します。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="184"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="185"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>エラー: 使い方: %1（局番を 1 つ指定）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="192"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="193"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="198"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="199"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>エラー: 局番 %1 (%2) はアラーム・警告履歴を保持していません</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="205"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="206"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>エラー: %1 ドライバには %2 コマンドがありません</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
         <source>alarm reset</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
         <source>record erase</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="218"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="219"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下の操作は局番 %1 のドライバを変更します。送信するには --yes を付けてください:</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="222"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="223"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 原因が取り除かれ、かつ電源再投入でのみ解除されるアラームでなければ、発生中のアラームを解除します</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="246"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="248"/>
         <source>Machine number %1 (%2)</source>
         <translation>局番 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="272"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="276"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="295"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="298"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="306"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -771,143 +799,143 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
         <source>&amp;Re-read</source>
         <translation>再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
         <source>Reset &amp;alarm…</source>
         <translation>アラームリセット(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="62"/>
         <source>&amp;Clear records…</source>
         <translation>履歴消去(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="65"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>局番 %1 (%2) のアラームと警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>#</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Panel</source>
         <translation>パネル表示</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="109"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="111"/>
         <source>Cause and remedy</source>
         <translation>原因と対策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="110"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="112"/>
         <source>Communication error register</source>
         <translation>通信エラーレジスタ</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか、電源再投入でのみ解除できるかを表示します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>ドライバが保持しているアラーム履歴・警告履歴を消去します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="301"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="132"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="303"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>履歴を選択すると原因と対策を表示します。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
         <source>Not read yet.</source>
         <translation>未読出しです。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="135"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>このドライバはアラーム・警告履歴を保持しません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="163"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="165"/>
         <source>Alarm state: %1</source>
         <translation>アラーム状態: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="255"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
         <source>Reading the records…</source>
         <translation>履歴を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="277"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="278"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="280"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="282"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="284"/>
         <source>Could not be read: %1</source>
         <translation>読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>This drive has no communication error register.</source>
         <translation>このドライバには通信エラーレジスタがありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: could not be read.</source>
         <translation>%1: 読み出せません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>%1: no error (0).</source>
         <translation>%1: エラーなし (0)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="315"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2（既知のコードではありません）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="319"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -916,153 +944,153 @@ Remedy: %5</source>
 対策: %5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
         <source>No alarm records</source>
         <translation>アラーム履歴なし</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
         <source>No warning records</source>
         <translation>警告履歴なし</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="337"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="338"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="340"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: %3 件中 %2 件（新しい順）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="349"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="351"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="378"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>履歴 %1: コード %2 は %3 表にありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="383"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（履歴 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
         <source>Cause: %1</source>
         <translation>原因: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
         <source>Remedy: %1</source>
         <translation>対策: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="391"/>
         <source>To clear: %1</source>
         <translation>解除方法: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="420"/>
         <source>Writes: %1</source>
         <translation>書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>原因が取り除かれていれば、発生中のアラームを解除します。電源再投入でのみ解除できるアラームもあります。結果に表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="428"/>
         <source>Reset alarm</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="427"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>局番 %1 にアラームリセットコマンドを送信しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="433"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="435"/>
         <source>Sending the alarm reset…</source>
         <translation>アラームリセットを送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="441"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="442"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="444"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>ドライバの電源を切り、5 s 待ってから再投入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 件）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>the alarm and warning records</source>
         <translation>アラーム履歴と警告履歴</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="456"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
         <source>Clear records</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source>Erase %1 of machine %2?</source>
         <translation>局番 %2 の%1を消去しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source> and </source>
         <translation> と </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="458"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="461"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>履歴は復元できません。書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="463"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
         <source>Erasing the records…</source>
         <translation>履歴を消去中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="479"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="482"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="484"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -1328,160 +1356,157 @@ Remedy: %5</source>
     </message>
 </context>
 <context>
-    <name>opentop::BackupDevice</name>
-    <message>
-        <location filename="../model/files/BackupDevice.cpp" line="75"/>
-        <source>drive %1 (%2)</source>
-        <translation>ドライバ %1 (%2)</translation>
-    </message>
-</context>
-<context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>&amp;Cancel</source>
         <translation>キャンセル(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
         <source>&amp;Save the drives read</source>
         <translation>読み出したドライバを保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="32"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Back up drives</source>
         <translation>ドライバのバックアップ</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Progress</source>
         <translation>進捗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="41"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>読み出せたドライバのみ保存します。その他は除外されます</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="43"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
         <source>Stop after the drive being read</source>
         <translation>読出し中のドライバが終わったら停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="89"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="72"/>
+        <source>Nothing was read: %1.</source>
+        <translation>何も読み出していません：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/BackupDialog.cpp" line="97"/>
         <source>Waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="93"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="101"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="94"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>%n 台のドライバの設定を読出し中…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="104"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
         <source>Stopping after the drive being read…</source>
         <translation>読出し中のドライバが終わったら停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="121"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
         <source>Not read (cancelled)</source>
         <translation>未読出し（キャンセル）</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="131"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>ドライバ %1: 識別できません。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="132"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
         <source>Not identified</source>
         <translation>識別不可</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="148"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n 個の設定を %1 ms で読出し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="159"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
         <source>Value not allowed</source>
         <translation>許可されていない値</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
         <source>Read failed</source>
         <translation>読出し失敗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="182"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未読出し: ドライバ %1。まだ何も保存していません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="188"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="196"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>読み出した %n 台のドライバを保存しますか？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="212"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>%n 台のドライバを %1 に保存しました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="218"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="226"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>除外（未読出し）: ドライバ %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="222"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="230"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -1489,7 +1514,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="290"/>
+        <location filename="../model/files/BackupFile.cpp" line="309"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 は %2 MB を超えています。これはバックアップファイルの上限です（247 台分のバックアップでもはるかに小さくなります）。バックアップファイルではありません</translation>
     </message>
@@ -1497,122 +1522,132 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFileParser</name>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="48"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="49"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON ファイルではありません: %2 バイト目で %1</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="52"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="53"/>
         <source>not an OpenTOP backup file: the JSON is not an object</source>
         <translation>OpenTOP のバックアップファイルではありません: JSON がオブジェクトではありません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="62"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="63"/>
         <source>&quot;created&quot; is not an ISO 8601 date and time</source>
         <translation>&quot;created&quot; が ISO 8601 形式の日時ではありません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="74"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="75"/>
         <source>the file holds no drives (&quot;devices&quot; must be a non-empty list)</source>
         <translation>ドライバが含まれていません（&quot;devices&quot; は空でないリストでなければなりません）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="81"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="82"/>
         <source>%1: not a drive</source>
         <translation>%1: ドライバではありません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="83"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="84"/>
         <source>machine number %1 appears twice</source>
         <translation>局番 %1 が 2 回出現しています</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="97"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="98"/>
         <source>not an OpenTOP backup file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP のバックアップファイルではありません（&quot;format&quot; が &quot;%2&quot; ではなく &quot;%1&quot; です）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="99"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="100"/>
         <source>not an OpenTOP backup file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP のバックアップファイルではありません（&quot;format&quot;: &quot;%1&quot; がありません）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="104"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="105"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; は 1 以上の整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="106"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="107"/>
         <source>written by a newer OpenTOP (format version %1); this version reads format version %2</source>
         <translation>新しい OpenTOP で書き込まれています（フォーマットバージョン %1）。このバージョンが読み込めるのはフォーマットバージョン %2 です</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="112"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="113"/>
         <source>the file has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>チェックサムがありません（&quot;checksum&quot;: &quot;sha256:…&quot;）。OpenTOP で書き込まれていないか、書込み後に変更されています</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="117"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="118"/>
         <source>the file was changed after it was written (checksum mismatch)</source>
         <translation>書込み後にファイルが変更されています（チェックサム不一致）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="127"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
         <source>%1: &quot;slave&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;slave&quot; は局番 1–247 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="129"/>
         <source>%1 (machine number %2)</source>
         <translation>%1（局番 %2）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="132"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="133"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なファミリ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="137"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="138"/>
         <source>%1: &quot;variant&quot; must be text or null</source>
         <translation>%1: &quot;variant&quot; はテキストまたは null でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="142"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="143"/>
         <source>%1: unknown variant &quot;%2&quot; of family %3; known: %4</source>
         <translation>%1: ファミリ %3 の不明な機種 &quot;%2&quot;。既知: %4</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="144"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="145"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="151"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="153"/>
+        <source>%1: &quot;machineName&quot; must be text</source>
+        <translation>%1: &quot;machineName&quot; はテキストでなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BackupFileParser.cpp" line="155"/>
+        <source>%1: &quot;machineName&quot;: %2</source>
+        <translation>%1: &quot;machineName&quot;: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BackupFileParser.cpp" line="160"/>
         <source>%1: &quot;parameters&quot; must be a list</source>
         <translation>%1: &quot;parameters&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="171"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="180"/>
         <source>%1: no &quot;name&quot;</source>
         <translation>%1: &quot;name&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="174"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="183"/>
         <source>%1 %2: &quot;registers&quot; must be a list</source>
         <translation>%1 %2: &quot;registers&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="178"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="187"/>
         <source>%1 %2: registers must be numbers 0–65535</source>
         <translation>%1 %2: registers は 0–65535 の数値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="184"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="193"/>
         <source>%1 %2: address &quot;%3&quot;, but the %4 profile has it at %5</source>
         <translation>%1 %2: アドレスが &quot;%3&quot; ですが、%4 プロファイルでは %5 です</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="209"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="218"/>
         <source>%1: %2: &quot;value&quot; %3 does not match its registers (%4)</source>
         <translation>%1: %2: &quot;value&quot; %3 がレジスタ値 (%4) と一致しません</translation>
     </message>
@@ -1772,28 +1807,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="27"/>
+        <location filename="../ui/main/BusDocks.cpp" line="28"/>
         <source>Traffic log</source>
         <translation>通信ログ</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="34"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Bus overview</source>
         <translation>バス一覧</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="35"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
         <source>Trends</source>
         <translation>トレンド</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="36"/>
+        <location filename="../ui/main/BusDocks.cpp" line="37"/>
         <source>Communication groups</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="39"/>
-        <location filename="../ui/main/BusDocks.cpp" line="77"/>
+        <location filename="../ui/main/BusDocks.cpp" line="40"/>
+        <location filename="../ui/main/BusDocks.cpp" line="110"/>
         <source>Not connected</source>
         <translation>未接続</translation>
     </message>
@@ -1801,53 +1836,87 @@ Drives: %5</source>
 <context>
     <name>opentop::BusGroups</name>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="108"/>
+        <location filename="../model/bus/BusGroups.cpp" line="109"/>
         <source>machine number %1 is the parent of communication group %1: what is sent to it is also executed by %2 (children do not reply)</source>
         <translation>局番 %1 は通信グループ %1 の親局です: 親局に送信した内容は %2 でも実行されます（子局は応答しません）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="118"/>
+        <location filename="../model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="136"/>
         <source>%1 and %2</source>
         <translation>%1 と %2</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="145"/>
         <source>This also reaches machine number %1 (the child of communication group %2; it executes it without replying).</source>
         <translation>この操作は局番 %1（通信グループ %2 の子局。応答せずに実行します）にも届きます。</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="131"/>
+        <location filename="../model/bus/BusGroups.cpp" line="149"/>
         <source>This also reaches machine numbers %1 (the children of communication group %2; they execute it without replying).</source>
         <translation>この操作は局番 %1（通信グループ %2 の子局。応答せずに実行します）にも届きます。</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="141"/>
+        <location filename="../model/bus/BusGroups.cpp" line="159"/>
         <source>child of %1</source>
         <translation>%1 の子局</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="144"/>
+        <location filename="../model/bus/BusGroups.cpp" line="162"/>
         <source>parent of %1</source>
         <translation>%1 の親局</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="152"/>
+        <location filename="../model/bus/BusGroups.cpp" line="170"/>
         <source>machine number %1 is a child of %2 and itself a parent: a child must not be a group parent</source>
         <translation>局番 %1 は %2 の子局であり、自身も親局です: 子局をグループ親局にすることはできません</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="157"/>
+        <location filename="../model/bus/BusGroups.cpp" line="175"/>
         <source>machine number %1 is in communication group %2, but no drive %2 is known: frames to %2 reach %1 although nothing answers</source>
         <translation>局番 %1 は通信グループ %2 に属していますが、ドライバ %2 が見つかりません: %2 宛のフレームは、応答はありませんが %1 に届きます</translation>
     </message>
 </context>
 <context>
-    <name>opentop::BusListModel</name>
+    <name>opentop::BusListMenu</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
-        <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
-        <translation>局番（16 進）。ドライバのロータリスイッチ SW1（上位桁）と SW2（下位桁）の設定値です</translation>
+        <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
+        <source>&amp;Name this machine…</source>
+        <translation>この機械に名前を付ける(&amp;N)…</translation>
     </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="35"/>
+        <source>&amp;Identify again</source>
+        <translation>再識別(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="46"/>
+        <source>&amp;Remove from list</source>
+        <translation>リストから削除(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="61"/>
+        <source>Name of %1 (up to %2 characters; empty removes the name):</source>
+        <translation>%1 の名前 (最大 %2 文字。空にすると名前を削除)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="67"/>
+        <source>Name this machine</source>
+        <translation>この機械に名前を付ける</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="74"/>
+        <source>Machine number %1 has no name now.</source>
+        <translation>局番 %1 の名前は削除されました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="75"/>
+        <source>Machine number %1 is now named %2.</source>
+        <translation>局番 %1 の名前は %2 になりました。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::BusListModel</name>
     <message>
         <location filename="../ui/bus/BusListModel.cpp" line="75"/>
         <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
@@ -1869,91 +1938,113 @@ Drives: %5</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
-        <source>Hex / switches</source>
-        <translation>16 進 / スイッチ</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
         <source>Family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="98"/>
         <source>Control priority</source>
         <translation>制御優先</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="111"/>
-        <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
-        <translation>2 台のドライバが局番 %1 を共有している可能性があります (%2, %3): ライン上の全ドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を再投入してください。終端抵抗の不良や A/B 線の入れ違いでも応答が化けます。</translation>
+        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
+        <source>How each drive&apos;s machine number is set on its switches:
+%1</source>
+        <translation>各ドライバの局番をスイッチで設定する方法：
+%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <source>Switches</source>
+        <translation>スイッチ</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="100"/>
+        <source>Name</source>
+        <translation>名前</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="112"/>
+        <source>Two drives may share machine number %1 (%2): check the address switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
+        <translation>2 台のドライバが局番 %1 (%2) を共有している可能性があります：ライン上のすべてのドライバのアドレススイッチを確認し、各ドライバに別の局番を設定して電源を入れ直してください。終端抵抗の不良や A/B の逆接続でも応答が壊れます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
         <source>%1 at %2</source>
         <translation>%1、%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="137"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="135"/>
         <location filename="../ui/bus/BusListModel.cpp" line="139"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="145"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="147"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>ステータスランプ %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="174"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>ドライバのマニュアル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="173"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="177"/>
         <source>Status light grey: not live — %1</source>
         <translation>ステータスランプ 灰: 更新停止 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <source>No name yet: Name… in the context menu (F2) names this machine</source>
+        <translation>まだ名前がありません：コンテキストメニューの「名前を付ける…」(F2) でこの機械に名前を付けます</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
+        <source>%1: the name given to this machine (F2 changes it)</source>
+        <translation>%1：この機械に付けた名前 (F2 で変更)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="189"/>
         <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
         <translation>このドライブへの要求は、ポートの形式ではなくドライブ自身の通信フォーマット %1 で送信されます。回線はトランザクションの合間にその形式へ切り替わり、また戻ります。右クリックメニューの「通信フォーマット…」で変更します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="196"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>ドライバが機種を通知しません。値が正しい範囲でチェックされるよう、コンテキストメニュー（機種）から選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="194"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="205"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>ドライバは I/O 端子から運転指令を受け付けています。バス経由の試運転には通信優先が必要です。</translation>
     </message>
@@ -1961,7 +2052,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../model/bus/BusMemory.cpp" line="44"/>
+        <location filename="../model/bus/BusMemory.cpp" line="73"/>
         <source>the simulated bus</source>
         <translation>シミュレーションバス</translation>
     </message>
@@ -2045,137 +2136,144 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="34"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
         <source>&amp;Scan</source>
         <translation>スキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
         <source>A&amp;dd drive…</source>
         <translation>ドライバ追加(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="39"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="40"/>
         <source>Ca&amp;ncel</source>
         <translation>キャンセル(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>範囲内の各局番に応答を問い合わせます</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
         <source>&amp;from</source>
         <translation>開始局番(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="54"/>
         <source>&amp;to</source>
         <translation>終了局番(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="57"/>
-        <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
-        <translation>局番 1–247（DBU では SW1/SW2 スイッチの 16 進値）</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="74"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>局番を 1 つ識別してリストに追加します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="193"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="220"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="83"/>
         <source>Scan progress</source>
         <translation>スキャン進捗</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="85"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>送信中の要求が終わったらスキャンを停止します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="91"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="94"/>
         <source>Rescan at %1</source>
         <translation>%1 で再スキャン</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="118"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="134"/>
         <source>Drives on the bus</source>
         <translation>バス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="179"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="150"/>
+        <source>Name this machine…</source>
+        <translation>この機械に名前を付ける…</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="206"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（局番 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="210"/>
         <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
         <translation>局番 %1 は応答しましたが、識別に失敗しました: 再試行中 (%3 回中 %2 回目)… ポーリングはスキャン終了まで待機します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="222"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）… ポーリングはスキャン終了まで待機します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="294"/>
         <source>If one is on this bus, add it with Add drive and its line format.</source>
         <translation>このバスにそのようなドライブがある場合は、「ドライブ追加」で通信フォーマットとともに追加してください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="299"/>
         <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
         <translation>局番 %1 は応答しましたが、再度問い合わせても識別に失敗しました:「ドライバ追加…」で手動で追加するか、通信設定を確認して再スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="215"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>送信中の要求が終わったらキャンセルします…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="233"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="59"/>
+        <source>Machine numbers 1–247, as set on each drive&apos;s switches:
+%1</source>
+        <translation>局番 1–247、各ドライバのスイッチの設定：
+%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="260"/>
         <source>Did not answer the last scan.</source>
         <translation>前回のスキャンで応答しませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="239"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="266"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="244"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>局番 %1–%2 の後でスキャンをキャンセルしました（%4 中 %3）: %n 台のドライバが見つかりました。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="252"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="279"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>局番 %1–%2 で %n 台のドライバが見つかりました（%3 s）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="293"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="320"/>
         <source>Asking machine number %1…</source>
         <translation>局番 %1 に問い合わせ中…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="298"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="325"/>
         <source>Machine number %1: %2 added.</source>
         <translation>局番 %1: %2 を追加しました。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="327"/>
         <source>Machine number %1: %2 %3</source>
         <translation>局番 %1: %2 %3</translation>
     </message>
@@ -2184,46 +2282,36 @@ Drives: %5</source>
         <source>&amp;Variant</source>
         <translation>機種(&amp;V)</translation>
     </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="349"/>
-        <source>&amp;Identify again</source>
-        <translation>再識別(&amp;I)</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="360"/>
-        <source>&amp;Remove from list</source>
-        <translation>リストから削除(&amp;R)</translation>
-    </message>
 </context>
 <context>
     <name>opentop::BusRecallBar</name>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="20"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="21"/>
         <source>&amp;Scan the bus</source>
         <translation>バスをスキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="42"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="43"/>
         <source>Last time on %1: %2.</source>
         <translation>前回 %1 では: %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>前回のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>前回の %1 台のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>前回設定した機種で、これらの局番のドライバを再識別します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="60"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="61"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 ではまだドライバが登録されていません。バスをスキャンしてドライバを検出してください。</translation>
     </message>
@@ -2231,22 +2319,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="222"/>
-        <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
-        <translation>応答が 2 回化けました (%1): 2 台のドライバが局番 %2 を共有している可能性があります。SW1/SW2 スイッチを確認してください</translation>
+        <location filename="../model/bus/BusScanner.cpp" line="223"/>
+        <source>garbled replies twice (%1): two drives probably share machine number %2; check their address switches (%3)</source>
+        <translation>応答が 2 回壊れていました (%1)：2 台のドライバが局番 %2 を共有している可能性があります。アドレススイッチを確認してください (%3)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="227"/>
+        <location filename="../model/bus/BusScanner.cpp" line="229"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>応答はありますが、一致するデバイスプロファイルがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="245"/>
+        <location filename="../model/bus/BusScanner.cpp" line="247"/>
         <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
         <translation>応答はありますが、識別の読出しに応答がありません (%1)。さらに %2 回問い合わせても同じです: 手動で追加するか、待ち時間を長くして再スキャンしてください</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="311"/>
+        <location filename="../model/bus/BusScanner.cpp" line="333"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>最初は応答が遅れました（%1 ms の待ち時間の後）。待ち時間を長くすると、このバスのスキャンが確実になります</translation>
     </message>
@@ -2605,49 +2693,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="90"/>
-        <location filename="../cli/CliContext.cpp" line="104"/>
-        <location filename="../cli/CliContext.cpp" line="112"/>
+        <location filename="../cli/CliContext.cpp" line="91"/>
+        <location filename="../cli/CliContext.cpp" line="105"/>
+        <location filename="../cli/CliContext.cpp" line="113"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="117"/>
+        <location filename="../cli/CliContext.cpp" line="118"/>
         <source>serial line: %1</source>
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="142"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="204"/>
+        <location filename="../cli/CliContext.cpp" line="224"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="209"/>
+        <location filename="../cli/CliContext.cpp" line="229"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="264"/>
+        <location filename="../cli/CliContext.cpp" line="287"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="268"/>
+        <location filename="../cli/CliContext.cpp" line="291"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="286"/>
+        <location filename="../cli/CliContext.cpp" line="309"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="296"/>
+        <location filename="../cli/CliContext.cpp" line="319"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -2721,100 +2809,100 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="34"/>
+        <location filename="../cli/CompareCommand.cpp" line="35"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>異なる設定を表示します。A、B: 局番、FILE または FILE:ID（差異の有無にかかわらず終了コード 0）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="41"/>
+        <location filename="../cli/CompareCommand.cpp" line="42"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>A をプロファイルの工場出荷時設定と比較します。マニュアルに初期値の記載がない設定は一覧に表示しますが、差異としては数えません。</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="54"/>
-        <location filename="../cli/CompareCommand.cpp" line="88"/>
-        <location filename="../cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="55"/>
+        <location filename="../cli/CompareCommand.cpp" line="90"/>
+        <location filename="../cli/CompareCommand.cpp" line="148"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="67"/>
+        <location filename="../cli/CompareCommand.cpp" line="68"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="72"/>
+        <location filename="../cli/CompareCommand.cpp" line="73"/>
         <source>error: %1: cannot read %2</source>
         <translation>エラー: %1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="76"/>
+        <location filename="../cli/CompareCommand.cpp" line="77"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="107"/>
+        <location filename="../cli/CompareCommand.cpp" line="109"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>エラー: %1 には複数のドライバ (%2) が含まれています。%1:ID の形式で 1 台を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="110"/>
+        <location filename="../cli/CompareCommand.cpp" line="112"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>エラー: %1 に局番 %2 のドライバは含まれていません。含まれているのは %3 です</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="126"/>
+        <location filename="../cli/CompareCommand.cpp" line="128"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>エラー: compare A B、または compare A --defaults（A、B: 局番、FILE または FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="171"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="172"/>
+        <location filename="../cli/CompareCommand.cpp" line="174"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
-        <location filename="../cli/CompareCommand.cpp" line="178"/>
+        <location filename="../cli/CompareCommand.cpp" line="179"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="185"/>
         <source>no differences (%1 settings compared)</source>
         <translation>差異なし（比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="190"/>
+        <location filename="../cli/CompareCommand.cpp" line="192"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
@@ -2847,137 +2935,137 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="55"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="63"/>
         <source>Filter by setting or parameter name</source>
         <translation>設定名またはパラメータ名で絞り込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="65"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>選択した両側を読み出して比較します（ドライバは改めて読み出します）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="67"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="75"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="100"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="108"/>
         <source>%1 refused: %2</source>
         <translation>%1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="114"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="122"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
         <source>side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
         <source>side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="143"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="151"/>
         <source>Factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="158"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1 のバックアップファイルと、その中のドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="164"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1 にはバス上の識別済みドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="180"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="197"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="205"/>
         <source>Unknown family %1</source>
         <translation>不明なファミリ %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="217"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="225"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="218"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
         <source>factory defaults (%1)</source>
         <translation>工場出荷時設定 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="236"/>
         <source>(no documented default)</source>
         <translation>（初期値の記載なし）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="231"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="237"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="247"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="255"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 件の差異</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="248"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="251"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
         <source>Note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="266"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>工場出荷時設定の記載なし（差異としては数えません）: %1</translation>
     </message>
@@ -2985,62 +3073,62 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareSide</name>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="22"/>
+        <location filename="../ui/files/CompareSide.cpp" line="23"/>
         <source>Browse…</source>
         <translation>参照…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="25"/>
+        <location filename="../ui/files/CompareSide.cpp" line="27"/>
         <source>Drive on the bus</source>
         <translation>バス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="26"/>
+        <location filename="../ui/files/CompareSide.cpp" line="28"/>
         <source>Drive in a backup file</source>
         <translation>バックアップファイル内のドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="28"/>
+        <location filename="../ui/files/CompareSide.cpp" line="30"/>
         <source>Factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="32"/>
+        <location filename="../ui/files/CompareSide.cpp" line="34"/>
         <source>Drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="36"/>
+        <location filename="../ui/files/CompareSide.cpp" line="41"/>
         <source>Backup file</source>
         <translation>バックアップファイル</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="41"/>
+        <location filename="../ui/files/CompareSide.cpp" line="46"/>
         <source>Source:</source>
         <translation>取得元:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="42"/>
+        <location filename="../ui/files/CompareSide.cpp" line="47"/>
         <source>Drive:</source>
         <translation>ドライバ:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="43"/>
+        <location filename="../ui/files/CompareSide.cpp" line="48"/>
         <source>File:</source>
         <translation>ファイル:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="44"/>
+        <location filename="../ui/files/CompareSide.cpp" line="49"/>
         <source>Drive in file:</source>
         <translation>ファイル内のドライバ:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="123"/>
+        <location filename="../ui/files/CompareSide.cpp" line="170"/>
         <source>Open backup file</source>
         <translation>バックアップファイルを開く</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="124"/>
+        <location filename="../ui/files/CompareSide.cpp" line="171"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
@@ -3650,237 +3738,237 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="42"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="43"/>
         <source>DC controller</source>
         <translation>DC コントローラ</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="45"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="46"/>
         <source>Re&amp;load stored configuration</source>
         <translation>保存済み設定を再読込み(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store &amp;configuration</source>
         <translation>設定を保存(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
         <source>Store P&amp;ID</source>
         <translation>PID を保存(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="70"/>
         <source>Store pre&amp;set</source>
         <translation>設定速度を保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="72"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="73"/>
         <source>Writes %1 = 1: %2</source>
         <translation>%1 = 1 を書込み: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="77"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="78"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>store.config = 0 を書込み: コントローラは保存済みの設定を再読込みします。保存していない設定変更は破棄されます</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Speed mode and motor currents</source>
         <translation>速度モードとモータ電流</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Speed &amp;mode:</source>
         <translation>速度モード(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Rated current:</source>
         <translation>定格電流:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
         <source>Maximum start/load current:</source>
         <translation>最大起動/負荷電流:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
         <source>Brake current:</source>
         <translation>ブレーキ電流:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>Limit switches</source>
         <translation>リミットスイッチ</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>Limits:</source>
         <translation>リミット:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 アクティブレベル（正転）:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 アクティブレベル（逆転）:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>Protective stops (0 = off)</source>
         <translation>保護停止（0 = 無効）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
         <source>S&amp;tall stop time:</source>
         <translation>ストール停止時間(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="98"/>
         <source>Communication loss stop time:</source>
         <translation>通信断停止時間:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Serial port (used from the next power-up)</source>
         <translation>シリアルポート（次回の電源投入から有効）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="110"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="111"/>
         <source>Baud rate and parity are written as one 15-register block from 0x0080 that also stores the configuration; the controller uses them from the next power-up on: switch it off and on, then reconnect with them. The lock is lost at power-off until stored (Store configuration).</source>
         <translation>ボーレートとパリティは 0x0080 からの 15 レジスタの一括書込みで書き込まれ、この書込みで設定も保存されます。コントローラは次回の電源投入からこれらを使用します: 電源を入れ直し、新しい設定で再接続してください。シリアル設定ロックは保存（設定を保存）するまで電源オフで失われます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="132"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="133"/>
         <source>Takes effect now and is kept over power-off: each change is written as one 5-register block from 0x0050 that also stores the port states.</source>
         <translation>即時に有効になり、電源オフ後も保持されます: 変更のたびに 0x0050 からの 5 レジスタの一括書込みで書き込まれ、この書込みでポート状態も保存されます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="176"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="175"/>
         <source>The communication loss stop time is 0 s (%1): the manual does not say what 0 does, and OpenTOP assumes the stop is then off: if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
         <translation>通信断停止時間が 0 s です (%1): マニュアルは 0 の意味を記載しておらず、OpenTOP はこの場合停止が無効になると仮定しています: モータ運転中に接続が切れると、コントローラは最後の速度指令で運転を続けます。バスが無通信になったときにブレーキがかかるよう、時間を設定してください。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Baud rate:</source>
         <translation>ボーレート:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
         <source>Parity and stop bits:</source>
         <translation>パリティとストップビット:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
         <source>Configuration over serial:</source>
         <translation>シリアル経由の設定:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>Speed loop PID</source>
         <translation>速度ループ PID</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>&amp;P coefficient:</source>
         <translation>P 係数(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
         <source>I coefficient:</source>
         <translation>I 係数:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>&amp;D coefficient:</source>
         <translation>D 係数(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
         <source>D period:</source>
         <translation>D 周期:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>設定速度（ボリューム/アナログ制御）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>設定速度モード(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
         <source>Trigger:</source>
         <translation>トリガ:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>&amp;Forward speed:</source>
         <translation>正転速度(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
         <source>Reverse speed:</source>
         <translation>逆転速度:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 をデジタルポートとして使用</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>AI1 level:</source>
         <translation>AI1 レベル:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="131"/>
         <source>AI2 level:</source>
         <translation>AI2 レベル:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="192"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="191"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>即時に有効。保存 (%1) するまでは電源オフで失われます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="253"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
         <source>Set it anyway?</source>
         <translation>それでも設定しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="269"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="268"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>このモード (%1) での正転速度と逆転速度: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="271"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="270"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度の単位と範囲は設定速度モードによります（未読出し）。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="313"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="294"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;書込み済み・未保存:&lt;/b&gt; %1。これらの値は現在有効ですが、コントローラの電源を切ると失われます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="335"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="316"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3889,17 +3977,17 @@ Stored: %2.</source>
 保存: %2。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="346"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="327"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>未書込みのため保存されていません: %1。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="349"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1: 完了。電源オフ後も保持されます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="357"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="338"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3908,17 +3996,17 @@ Configuration changes written but not stored are discarded.</source>
 書込み済みで未保存の設定変更は破棄されます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="363"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
         <source>Stored configuration reloaded.</source>
         <translation>保存済み設定を再読込みしました。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="371"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="352"/>
         <source>Writing %1 = %2…</source>
         <translation>%1 = %2 を書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="381"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="362"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失敗: %3</translation>
     </message>
@@ -4051,32 +4139,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceInfo</name>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="28"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="59"/>
         <source>not checked</source>
         <translation>未確認</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="30"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="61"/>
         <source>online</source>
         <translation>オンライン</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="32"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="63"/>
         <source>no answer</source>
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="34"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="65"/>
         <source>garbled replies (duplicate machine number?)</source>
         <translation>応答化け（局番の重複？）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="37"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="68"/>
         <source>unknown device</source>
         <translation>不明なデバイス</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="39"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="70"/>
         <source>answered, identification failed</source>
         <translation>応答あり、識別失敗</translation>
     </message>
@@ -4084,27 +4172,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceMonitor</name>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="60"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="66"/>
         <source>Stopped</source>
         <translation>停止中</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="62"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="68"/>
         <source>Running</source>
         <translation>運転中</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="69"/>
         <source>Running CCW</source>
         <translation>CCW 運転中</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="69"/>
         <source>Running CW</source>
         <translation>CW 運転中</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="206"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="212"/>
         <source>machine number %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
@@ -4112,41 +4200,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="81"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="90"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="83"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="85"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 は設定ではなくコマンドです。コマンドは要求に応じて 1 つずつ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="239"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="250"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="262"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="248"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="259"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="271"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="273"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="282"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n 件の書込みに失敗しました: %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="276"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="285"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>書き込みましたが、届いたすべてのドライバでは確認できていません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="279"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="288"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -4263,87 +4351,125 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveLineDialog</name>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="29"/>
         <source>Line format of machine number %1</source>
         <translation>局番 %1 の通信フォーマット</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="29"/>
         <source>Add drive</source>
         <translation>ドライブ追加</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="36"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="37"/>
         <source>&amp;Machine number:</source>
         <translation>局番(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="44"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="51"/>
         <source>The port&apos;s (%1)</source>
         <translation>ポートの形式（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="56"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="63"/>
         <source>The baud rate and format the drive is set to: requests to it switch the port to it and back between transactions. Type another as 38400 8E1.</source>
         <translation>ドライブに設定されたボーレートと形式。このドライブへの要求は、トランザクションの合間にポートをその形式へ切り替え、また戻します。ほかの形式は 38400 8E1 のように入力します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="59"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="66"/>
         <source>&amp;Line format:</source>
         <translation>通信フォーマット(&amp;L):</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="67"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="74"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="140"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="147"/>
         <source>Line &amp;format…</source>
         <translation>通信フォーマット(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="145"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="152"/>
         <source>Machine number %1 talks %2, not the port&apos;s %3</source>
         <translation>局番 %1 はポートの %3 ではなく %2 で通信します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="148"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="155"/>
         <source>Machine number %1 talks the port&apos;s %2</source>
         <translation>局番 %1 はポートの %2 で通信します</translation>
     </message>
 </context>
 <context>
+    <name>opentop::DriveName</name>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="18"/>
+        <source>A machine&apos;s name has at most %1 characters; &quot;%2&quot; has %3.</source>
+        <translation>機械名は最大 %1 文字です。「%2」は %3 文字あります。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="29"/>
+        <source>A machine&apos;s name may not hold control characters or line breaks (U+%1).</source>
+        <translation>機械名に制御文字や改行は使えません (U+%1)。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="37"/>
+        <source>A machine&apos;s name may not hold %1 (a percent sign directly before a digit).</source>
+        <translation>機械名に %1（パーセント記号の直後に数字）は使えません。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="44"/>
+        <source>machine number %1</source>
+        <translation>局番 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="45"/>
+        <source>machine number %1 (%2)</source>
+        <translation>局番 %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="50"/>
+        <source>Machine number %1</source>
+        <translation>局番 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="51"/>
+        <source>Machine number %1 (%2)</source>
+        <translation>局番 %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="68"/>
+        <source>drive %1 (%2)</source>
+        <translation>ドライバ %1 (%2)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="101"/>
+        <location filename="../ui/main/DrivePages.cpp" line="102"/>
         <source>Monitor</source>
         <translation>モニタ</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="114"/>
+        <location filename="../ui/main/DrivePages.cpp" line="115"/>
         <source>Test run</source>
         <translation>試運転</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="121"/>
-        <source>drive %1 (%2)</source>
-        <translation>ドライバ %1 (%2)</translation>
+        <location filename="../ui/main/DrivePages.cpp" line="139"/>
+        <source>%1 — %2, firmware V%3, switches %4</source>
+        <translation>%1 — %2、ファームウェア V%3、スイッチ %4</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="122"/>
+        <location filename="../ui/main/DrivePages.cpp" line="123"/>
         <source>Speed loop tuning</source>
         <translation>速度ループチューニング</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="128"/>
+        <location filename="../ui/main/DrivePages.cpp" line="129"/>
         <source>Alarms</source>
         <translation>アラーム</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/DrivePages.cpp" line="137"/>
-        <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
-        <translation>局番 %1 (%2, %3) — %4、ファームウェア V%5</translation>
     </message>
 </context>
 <context>
@@ -4467,72 +4593,82 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveWorkspace</name>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="135"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="167"/>
         <source>Write &amp;all pending</source>
         <translation>未書込みをすべて書込み(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="34"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="36"/>
         <source>Revert all</source>
         <translation>すべて元に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="37"/>
         <source>Re-read all</source>
         <translation>すべて再読出し</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="51"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="53"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>このドライバの全ページの未書込みの編集をすべて書き込み、照合します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="84"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="86"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>設定するドライバをバスリストで選択してください。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
+        <translation>
+            <numerusform>すべての編集が受け付けられました。まだ何も書き込んでいません：「未書込みをすべて書込み」で %n 個の値を送信します。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="134"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>未書込みをすべて書込み(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="188"/>
         <source>Reading the drive…</source>
         <translation>ドライバを読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="158"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="170"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="145"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="208"/>
         <source>Nothing was written: %1</source>
         <translation>何も書き込んでいません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="183"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="142"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="222"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="231"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>未書込みの %n 個の値を局番 %1 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="193"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="203"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="236"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
@@ -6056,12 +6192,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitCheck</name>
     <message>
-        <location filename="../model/run/ExitCheck.cpp" line="19"/>
+        <location filename="../model/run/ExitCheck.cpp" line="20"/>
         <source>in communication priority (its own inputs cannot start or stop it)</source>
         <translation>通信優先（自身の入力端子では起動・停止できません）</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitCheck.cpp" line="20"/>
+        <location filename="../model/run/ExitCheck.cpp" line="21"/>
         <source>Machine number %1 (%2): %3</source>
         <translation>局番 %1 (%2): %3</translation>
     </message>
@@ -6627,77 +6763,77 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupFollowers</name>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="76"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="78"/>
         <source>could not be read</source>
         <translation>読み出せませんでした</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="106"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="109"/>
         <source>its control priority could not be read</source>
         <translation>制御優先を読み出せませんでした</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="108"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="111"/>
         <source>it is in %1: it takes run commands only from its input terminals and ignores them over the bus</source>
         <translation>%1 です。運転コマンドは入力端子からしか受け付けず、通信で送られたものは無視します</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="112"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="115"/>
         <source>an alarm is active: it runs only once the alarm is cleared</source>
         <translation>アラームが発生しています。アラームが解除されるまで運転しません</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="126"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="129"/>
         <source>error code %1h</source>
         <translation>エラーコード %1h</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="146"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="154"/>
         <source>Machine number %1 follows it.</source>
         <translation>局番 %1 は従います。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="147"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="155"/>
         <source>Machine number %1 follows it (%2).</source>
         <translation>局番 %1 は従います（%2）。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="149"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="158"/>
         <source>Machine number %1: not known whether it follows: %2.</source>
         <translation>局番 %1: 従うかどうか不明です: %2。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="153"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="160"/>
         <source>Machine number %1 does NOT follow it: %2. To run it with this drive, set its control priority to communication priority; otherwise it shows E2h &quot;Cannot execute command&quot;.</source>
         <translation>局番 %1 は従いません: %2。このドライバと一緒に運転するには、制御優先を通信優先に設定してください。そうしないと E2h「コマンド実行不可」を表示します。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="168"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="174"/>
         <source>Machine number %1: its run state could not be read.</source>
         <translation>局番 %1: 運転状態を読み出せませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="170"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="176"/>
         <source>Machine number %1 runs.</source>
         <translation>局番 %1 は運転中です。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="171"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
         <source>Machine number %1 runs (%2).</source>
         <translation>局番 %1 は運転中です（%2）。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="173"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="179"/>
         <source>Machine number %1 does not run: %2.</source>
         <translation>局番 %1 は運転していません: %2。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="175"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="181"/>
         <source>Machine number %1 does not run.</source>
         <translation>局番 %1 は運転していません。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="183"/>
         <source>It shows %1</source>
         <translation>表示: %1</translation>
     </message>
@@ -7401,112 +7537,112 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>切断(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="55"/>
+        <location filename="../ui/main/MainMenus.cpp" line="57"/>
         <source>Communication &amp;groups…</source>
         <translation>通信グループ(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="62"/>
         <source>&amp;Export alarm histories…</source>
         <translation>アラーム履歴をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="61"/>
+        <location filename="../ui/main/MainMenus.cpp" line="64"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="64"/>
+        <location filename="../ui/main/MainMenus.cpp" line="67"/>
         <source>&amp;Files</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="69"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Drive</source>
         <translation>ドライバ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="72"/>
+        <location filename="../ui/main/MainMenus.cpp" line="75"/>
         <source>&amp;Write all pending</source>
         <translation>未書込みをすべて書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="74"/>
+        <location filename="../ui/main/MainMenus.cpp" line="77"/>
         <source>&amp;Re-read all</source>
         <translation>すべて再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="76"/>
+        <location filename="../ui/main/MainMenus.cpp" line="79"/>
         <source>Write a setting to the selected drives…</source>
         <translation>選択したドライバに設定を書込み…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="82"/>
+        <location filename="../ui/main/MainMenus.cpp" line="85"/>
         <source>&amp;Next page</source>
         <translation>次のページ(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="88"/>
+        <location filename="../ui/main/MainMenus.cpp" line="91"/>
         <source>&amp;Previous page</source>
         <translation>前のページ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="104"/>
+        <location filename="../ui/main/MainMenus.cpp" line="107"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="113"/>
         <source>&amp;Traffic log</source>
         <translation>通信ログ(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="111"/>
+        <location filename="../ui/main/MainMenus.cpp" line="114"/>
         <source>Bus &amp;overview</source>
         <translation>バス一覧(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="113"/>
+        <location filename="../ui/main/MainMenus.cpp" line="116"/>
         <source>T&amp;rends</source>
         <translation>トレンド(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="114"/>
+        <location filename="../ui/main/MainMenus.cpp" line="117"/>
         <source>Communication &amp;groups</source>
         <translation>通信グループ(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="128"/>
+        <location filename="../ui/main/MainMenus.cpp" line="130"/>
         <source>Language</source>
         <translation>言語</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="129"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP は次回の起動時から %1 で表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="135"/>
+        <location filename="../ui/main/MainMenus.cpp" line="137"/>
         <source>&amp;End of line</source>
         <translation>出荷検査(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="137"/>
+        <location filename="../ui/main/MainMenus.cpp" line="139"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="153"/>
+        <location filename="../ui/main/MainMenus.cpp" line="155"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="163"/>
+        <location filename="../ui/main/MainMenus.cpp" line="165"/>
         <source>Export alarm histories</source>
         <translation>アラーム履歴のエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="164"/>
+        <location filename="../ui/main/MainMenus.cpp" line="166"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
@@ -7763,37 +7899,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="177"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="191"/>
         <source>Live values</source>
         <translation>ライブ値</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="185"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="199"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="201"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="215"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="266"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="280"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>%1 %2（ドライバの表示）</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="275"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="289"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>アラーム %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="278"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="292"/>
         <source>Alarm active (reading which one…)</source>
         <translation>アラーム発生中（内容を読出し中…）</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="333"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="347"/>
         <source>No live state: %1</source>
         <translation>ライブ状態なし: %1</translation>
     </message>
@@ -7874,12 +8010,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="32"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="33"/>
         <source>Switch to communication priority…</source>
         <translation>通信優先に切替え…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="57"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="58"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -7888,53 +8024,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 「%4」に切り替えると、これらのコマンドはバスから受け付けるようになります: 入力端子ではモータを起動・停止できなくなり、「%2」に戻すまで機械側の操作は無効になります。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="83"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
         <source>Switch to communication priority</source>
         <translation>通信優先に切替え</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>局番 %1 は運転、停止、回転方向、速度選択をバスから受け付けるようになります (%2 = &quot;%3&quot;)。入力端子ではモータを起動・停止できなくなります。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="90"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="91"/>
         <source>Switch</source>
         <translation>切替え</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="99"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="100"/>
         <source>Switching to communication priority…</source>
         <translation>通信優先に切替え中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="107"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="108"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>局番 %1 はバス経由で運転コマンドを受け付けるようになりました。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="110"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>制御優先を切り替えられません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="118"/>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="124"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="120"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="126"/>
         <source>Return to I/O priority</source>
         <translation>I/O 優先に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="119"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>局番 %1 は再び運転、停止、回転方向、速度選択を入力端子から受け付け、バス経由の運転コマンドを拒否します。入力が運転状態の場合、モータは運転します。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="129"/>
         <source>Returning to I/O priority…</source>
         <translation>I/O 優先に戻し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="136"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="138"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>局番 %1 は再び入力端子に従います。</translation>
     </message>
@@ -7976,32 +8112,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="38"/>
         <source>&amp;Write to all</source>
         <translation>すべてに書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="40"/>
         <source>Write one setting to several drives</source>
         <translation>1 つの設定を複数のドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Current value</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
@@ -8051,111 +8187,169 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="224"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="226"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>ドライバ間で単位が異なります (%1)。1 台ずつ書き込んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="232"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="234"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>ドライバ %1 では許可されていません (%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="239"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="241"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>ドライバ %1 の通信グループでは許可されていません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
         <source>None of the selected drives is identified.</source>
         <translation>選択したドライバはいずれも識別されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="259"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="304"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="261"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="262"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
         <source>Allowed on %1</source>
         <translation>%1 で許可</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="270"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="272"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="271"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="273"/>
         <source>Allowed on %1.</source>
         <translation>%1 で許可。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>それでも %n 台のドライバに設定しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="322"/>
         <source>&amp;Set it</source>
         <translation>設定する(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1 を局番 %2 に書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="347"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="343"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="352"/>
         <source>waiting…</source>
         <translation>待機中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1 を %n 台のドライバに書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>%n 台中 %1 台のドライバで書込み・照合完了。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="375"/>
         <source>writing…</source>
         <translation>書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="383"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
         <source>Written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="385"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
         <source>Written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="386"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>書込み済み、未照合（読み戻し不可）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="387"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="396"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::NameCommand</name>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="38"/>
+        <source>Name a machine (&quot;Infeed conveyor 3&quot;) or show the names of the bus</source>
+        <translation>機械に名前を付ける (「Infeed conveyor 3」)、またはバスの名前を表示</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="44"/>
+        <source>error: name takes a machine number and one name; put a name with spaces in quotes: name 1 &quot;Infeed conveyor 3&quot;</source>
+        <translation>エラー：name には局番と名前を 1 つずつ指定します。空白を含む名前は引用符で囲んでください：name 1 &quot;Infeed conveyor 3&quot;</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="52"/>
+        <source>error: %1</source>
+        <translation>エラー：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="62"/>
+        <source>No machine of this bus has a name yet; give one with: name ID &quot;TEXT&quot;</source>
+        <translation>このバスの機械にはまだ名前がありません。次のように付けます：name ID &quot;TEXT&quot;</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <source>name</source>
+        <translation>名前</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="77"/>
+        <source>error: &quot;%1&quot; is not a machine number 1–247</source>
+        <translation>エラー：「%1」は 1–247 の局番ではありません</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="87"/>
+        <source>Machine number %1 has no name.</source>
+        <translation>局番 %1 には名前がありません。</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="93"/>
+        <source>error: %1 Nothing was changed.</source>
+        <translation>エラー：%1 何も変更していません。</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="106"/>
+        <source>Machine number %1 has no name now.</source>
+        <translation>局番 %1 の名前は削除されました。</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="107"/>
+        <source>%1 is named now; messages, files and scans show it.</source>
+        <translation>%1 に名前を付けました。メッセージ、ファイル、スキャンに表示されます。</translation>
     </message>
 </context>
 <context>
@@ -8184,87 +8378,87 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirror</name>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="19"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="20"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="21"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="22"/>
         <source>machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="23"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="24"/>
         <source>running data No.</source>
         <translation>運転データ番号</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="25"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="26"/>
         <source>countdown</source>
         <translation>カウントダウン</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="27"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="28"/>
         <source>load rate</source>
         <translation>負荷率</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="46"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
         <source>Alarm %1 %2</source>
         <translation>アラーム %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="48"/>
         <source>Alarm (code not read yet)</source>
         <translation>アラーム（コード未読出し）</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="58"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="59"/>
         <source>Current speed %1 %2</source>
         <translation>現在速度 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="62"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="63"/>
         <source>Current speed: no finite value in %1</source>
         <translation>現在速度: %1 に有限値がありません</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="70"/>
         <source>Current speed %1 r/min</source>
         <translation>現在速度 %1 r/min</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="70"/>
         <source>Speed not read</source>
         <translation>速度未読出し</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="75"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="76"/>
         <source>Machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="83"/>
         <source>Running data SPno%1</source>
         <translation>運転データ SPno%1</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="89"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
         <source>Running data not read</source>
         <translation>運転データ未読出し</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="99"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="96"/>
         <source>Countdown set to %1 d %2 h %3 min %4 s (the drive does not report the time left)</source>
         <translation>カウントダウン設定 %1 d %2 h %3 min %4 s（ドライバは残り時間を通知しません）</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="110"/>
         <source>Load rate %1 %</source>
         <translation>負荷率 %1 %</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="116"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
         <source>Load rate not read</source>
         <translation>負荷率未読出し</translation>
     </message>
@@ -8305,27 +8499,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="199"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="217"/>
         <source>%1 (not valid now)</source>
         <translation>%1（現在は無効）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="246"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="237"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="255"/>
         <source>Allowed: %1</source>
         <translation>許容: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="240"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="258"/>
         <source>On the drive: %1</source>
         <translation>ドライバの値: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="274"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="289"/>
         <source>Not accepted: %1</source>
         <translation>受け付けられません: %1</translation>
     </message>
@@ -8333,112 +8527,112 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="38"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="39"/>
         <source>Parameter initialisation</source>
         <translation>パラメータ初期化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="48"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="49"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>ドライバ %1 の全設定を、通信設定も含めて工場出荷時設定に戻します: その後、ドライバは初期値の通信速度でしか応答しない場合があり、制御優先は入力端子側に戻ります。モータは停止している必要があります。送信前に、このドライバへの影響を一覧表示します。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="56"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="57"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>ドライバ %1 の全パラメータを初期化(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="59"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>ドライバと変更内容を示して事前に確認します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="86"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="87"/>
         <source>Reading what the initialisation would change…</source>
         <translation>初期化による変更内容を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="110"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="111"/>
         <source>Afterwards:</source>
         <translation>その後:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="115"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="116"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>このドライバの未書込みの編集 %n 件は破棄されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="119"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>送信済み: %1（局番 %2 のみ）。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>送信済み: %1（局番 %2）。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="127"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
         <source>Initialise drive %1</source>
         <translation>ドライバ %1 の初期化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="125"/>
-        <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
-        <translation>ドライバ %1 (%2) の全設定を工場出荷時設定に戻しますか？</translation>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <source>Reset every setting of %1 to its factory defaults?</source>
+        <translation>%1 のすべての設定を工場出荷時の値に戻しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="142"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>キャンセルしました。何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="147"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="150"/>
         <source>Initialising drive %1…</source>
         <translation>ドライバ %1 を初期化中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="156"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="159"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>ドライバ %1 が初期化を確認しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="157"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
         <source>Nothing was sent: %1</source>
         <translation>何も送信していません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="173"/>
         <source>&amp;Reconnect at %1 bit/s after the power-up</source>
         <translation>電源投入後に %1 bit/s で再接続(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="177"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>ドライバ %1 を初期化しました。値を再読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="180"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="183"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>ドライバ %1 を初期化しました。%n 個の値を読み戻せませんでした（現在は初期値の通信設定でのみ応答する可能性があります）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="187"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>ドライバ %1 を工場出荷時設定に初期化しました。値を再読出ししました。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="210"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="213"/>
         <source>Reconnecting at %1 bit/s in %2 s…</source>
         <translation>%2 s 後に %1 bit/s で再接続します…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="223"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="226"/>
         <source>Reconnect at %1 bit/s from the Bus menu.</source>
         <translation>「バス」メニューから %1 bit/s で再接続してください。</translation>
     </message>
@@ -8529,75 +8723,83 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="106"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="149"/>
         <source>&amp;Write page</source>
         <translation>ページ書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="27"/>
         <source>Re&amp;vert</source>
         <translation>元に戻す(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="28"/>
         <source>Re-&amp;read</source>
         <translation>再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>このページの未書込みの編集をドライバに書き込み、読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="49"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>このページの未書込みの編集を破棄します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="50"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>このページの値をドライバから再読出しします（編集は保持）</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/ParameterPage.cpp" line="137"/>
+        <source>Every field is accepted now. Nothing has been written yet: Write page sends %n value(s).</source>
+        <translation>
+            <numerusform>すべての欄が受け付けられました。まだ何も書き込んでいません：「ページを書込み」で %n 個の値を送信します。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="107"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="150"/>
         <source>&amp;Write page (%1)</source>
         <translation>ページ書込み(&amp;W) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="163"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="124"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="167"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="116"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>何も書き込んでいません: %n 項目が受け付けられません。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="166"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="208"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>ページ %1 の %n 個の値を局番 %2 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="161"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="182"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="203"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="212"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="175"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="217"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
@@ -9315,29 +9517,34 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="427"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で JSON が不正です: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="431"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="442"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="453"/>
         <source>must be an object</source>
         <translation>オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>name repeated</source>
         <translation>名前が重複しています</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="464"/>
+        <source>texts: {setting:…} names no parameter (%1)</source>
+        <translation>texts: {setting:…} が指すパラメータがありません (%1)</translation>
     </message>
     <message>
         <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
@@ -9348,74 +9555,79 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="78"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="79"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1 はプロファイル翻訳の上限 %2 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="96"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="97"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>プロファイル翻訳の上限 %1 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="101"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="102"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で有効な JSON ではありません: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="105"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="106"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="109"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot; は &quot;%1&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="112"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot; は %1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="117"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="118"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot; は &quot;%1&quot; ですが、プロファイルは &quot;%2&quot; です</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="119"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot; は &quot;%1&quot; ですが、&quot;%2&quot; であるべきです</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="123"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot; はキー → テキストのオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="126"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="127"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot; は空でない文字列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="143"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="144"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>プロファイルのキーが %1 個ありません: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="147"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="148"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>プロファイルにないキーが %1 個あります: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="155"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="156"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: パネルコードは英語と同じでなければなりません (%2)。実際: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="160"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="161"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: プレースホルダーは英語と同じでなければなりません (%2)。実際: (%3)</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="168"/>
+        <source>texts &quot;%1&quot;: the settings named ({setting:…}) must stay as in the English (%2), found (%3)</source>
+        <translation>texts &quot;%1&quot;: 参照する設定 ({setting:…}) は英語と同じでなければなりません (%2)。実際は (%3)</translation>
     </message>
 </context>
 <context>
@@ -10935,42 +11147,42 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreChoice</name>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Drive in file / setting</source>
         <translation>ファイル内のドライバ / 設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Value in file</source>
         <translation>ファイルの値</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Restore to</source>
         <translation>復元先</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="54"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="55"/>
         <source>(do not restore)</source>
         <translation>（復元しない）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="58"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="59"/>
         <source>Drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="117"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="121"/>
         <source>Two drives of the file would be restored to drive %1.</source>
         <translation>ファイルの 2 台のドライバがドライバ %1 に復元されます。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="122"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="126"/>
         <source>Drive %1 is not on the bus (or not identified).</source>
         <translation>ドライバ %1 がバス上にありません（または未識別）。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="134"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="138"/>
         <source>Nothing chosen: tick at least one setting of a drive with a target.</source>
         <translation>何も選択されていません: 復元先のあるドライバの設定を少なくとも 1 つチェックしてください。</translation>
     </message>
@@ -11102,201 +11314,206 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Preview</source>
         <translation>プレビュー(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Write to drives…</source>
         <translation>ドライバに書込み(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Cancel</source>
         <translation>キャンセル(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>&amp;Save report…</source>
         <translation>レポートを保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
         <source>Restore from a backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
         <source>No file chosen</source>
         <translation>ファイル未選択</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>&amp;Choose file…</source>
         <translation>ファイルを選択(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="47"/>
         <source>File:</source>
         <translation>ファイル:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>ドライバを読み出して変更内容を表示します。何も書き込みません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>プレビューした変更を書き込み、それぞれ読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>実行中の書込みの照合後に停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>レポートをテキストで保存します（名前が .csv で終わる場合は CSV）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="98"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="99"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="103"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="188"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="105"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="170"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>拒否。何も書き込みません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="109"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="110"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>ファイル内のドライバ %n 台。復元する内容を選択し、「プレビュー」を押してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="137"/>
         <source>Refused, nothing written:</source>
         <translation>拒否。何も書き込んでいません:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="152"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="139"/>
         <source>Drive %1 from %2: %3</source>
         <translation>ドライバ %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="187"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="169"/>
         <source>Choose a backup file first.</source>
         <translation>先にバックアップファイルを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <source>Nothing was read or written: %1.</source>
+        <translation>何も読み書きしていません：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestoreDialog.cpp" line="220"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
         <source>Reading drive %1…</source>
         <translation>ドライバ %1 を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
         <source>Writing drive %1…</source>
         <translation>ドライバ %1 に書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="241"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>ドライバ %1: %2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="269"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="260"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>実行中の書込みの照合後に停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="284"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="275"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="361"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="287"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="278"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>書き込む設定 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="294"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="297"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="288"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>まだ何も書き込んでいません。適用するには「ドライバに書込み」を押してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="298"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="289"/>
         <source>Nothing written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>Restore from backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="357"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="383"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="364"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>ドライバ %1 に %n 個の設定を書き込み、それぞれ読み戻して照合しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
         <source>Write to drives</source>
         <translation>ドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
         <source>&amp;Write</source>
         <translation>書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="393"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="374"/>
         <source>Save restore report</source>
         <translation>復元レポートを保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="394"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>テキスト (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="399"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -11323,13 +11540,8 @@ No unit can be tested until results can be recorded.</source>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 値を正確に書き込めません</translation>
     </message>
-    <message>
-        <location filename="../model/files/RestorePlan.cpp" line="166"/>
-        <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
-        <translation>保存コマンドは常に書き込みます: ドライバが保存した値は読み戻せず、読み出せるのは現在使用中の値のみです</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="177"/>
+        <location filename="../model/files/RestorePlan.cpp" line="173"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>ファイルの %n 個の値はこのドライバに書き込めません。何も書き込んでいません</numerusform>
@@ -11337,81 +11549,96 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <source>%1 sent after the writes, so that the settings written survive power-off</source>
+        <translation>書込み後に %1 を送信し、書き込んだ設定を電源オフ後も保持します</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="258"/>
+        <source>%1 sent: settings written to this drive earlier (by an interrupted restore, a page or the command line) are not stored yet</source>
+        <translation>%1 を送信：以前にこのドライバへ書き込んだ設定 (中断した復元、ページまたはコマンドライン) がまだ保存されていません</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="262"/>
+        <source>%1 not sent: nothing it stores is written. What a drive has stored cannot be read back: if it loses settings at power-off, switch it off and on and restore again</source>
+        <translation>%1 は送信していません：これが保存する設定は書き込んでいません。ドライバに保存された内容は読み戻せません。電源オフで設定が失われる場合は、電源を入れ直してから再度復元してください</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="296"/>
         <source>keep</source>
         <translation>維持</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="298"/>
         <source>write</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="300"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="270"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>unchanged</source>
         <translation>変更なし</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="273"/>
+        <location filename="../model/files/RestorePlan.cpp" line="314"/>
         <source>written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="276"/>
+        <location filename="../model/files/RestorePlan.cpp" line="317"/>
         <source>failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="278"/>
+        <location filename="../model/files/RestorePlan.cpp" line="319"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="280"/>
+        <location filename="../model/files/RestorePlan.cpp" line="321"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。復元を再実行して読み戻してください</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="305"/>
+        <location filename="../model/files/RestorePlan.cpp" line="346"/>
         <source>planned</source>
         <translation>計画済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="307"/>
+        <location filename="../model/files/RestorePlan.cpp" line="348"/>
         <source>restored</source>
         <translation>復元済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="309"/>
+        <location filename="../model/files/RestorePlan.cpp" line="350"/>
         <source>refused</source>
         <translation>拒否</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="352"/>
         <source>communication failure</source>
         <translation>通信失敗</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="313"/>
+        <location filename="../model/files/RestorePlan.cpp" line="354"/>
         <source>verification mismatch</source>
         <translation>照合不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="356"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
@@ -11419,95 +11646,105 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlanTable</name>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>File value</source>
         <translation>ファイルの値</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="15"/>
         <source>Drive value before</source>
         <translation>変更前のドライバの値</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="15"/>
         <source>Result</source>
         <translation>結果</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="93"/>
+        <source>&amp;Differences only</source>
+        <translation>差異のみ(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="95"/>
+        <source>Show only the settings that would be written (or were), and what went wrong</source>
+        <translation>書き込む (または書き込んだ) 設定と失敗した項目だけを表示</translation>
     </message>
 </context>
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="16"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="17"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 個を書込み・照合、%2 個は変更なし、%3 個は失敗、%4 個は未実行</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="22"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="23"/>
         <source>, %1 not confirmed</source>
         <translation>、%1 個は未確認</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="25"/>
         <source>; %1 of %2 store commands written</source>
         <translation>。保存コマンド %2 個中 %1 個を書込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 復元レポート</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>File: %1</source>
         <translation>ファイル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>Date: %1 (UTC)</source>
         <translation>日時: %1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
         <source>Written to the drives</source>
         <translation>ドライバに書込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
         <source>Preview only: nothing written</source>
         <translation>プレビューのみ: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="40"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="41"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>局番 %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="51"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="52"/>
         <source>  %1: %2</source>
         <translation>  %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="54"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1: ファイル %2、ドライバ %3: %4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="59"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="60"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
@@ -11515,44 +11752,44 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="49"/>
+        <location filename="../model/files/Restorer.cpp" line="51"/>
         <source>interrupted before anything was written</source>
         <translation>何も書き込む前に中断しました</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="64"/>
+        <location filename="../model/files/Restorer.cpp" line="66"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>ドライバの読出しに失敗しました。何も書き込んでいません (%1)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/Restorer.cpp" line="116"/>
+        <location filename="../model/files/Restorer.cpp" line="119"/>
         <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
         <translation>
             <numerusform>ファイルの %n 個の値は通信グループのドライバに書き込めません。何も書き込んでいません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="144"/>
+        <location filename="../model/files/Restorer.cpp" line="147"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>%2 回中 %1 回の書込み後に中断しました。完了するには復元を再実行してください</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="180"/>
+        <location filename="../model/files/Restorer.cpp" line="183"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未確認 (%2): ドライバがその値を保持しているかどうか不明です。復元を再実行してください（先にドライバを読み戻します）</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="214"/>
+        <location filename="../model/files/Restorer.cpp" line="217"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存後のドライバの値は %1 です</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="219"/>
+        <location filename="../model/files/Restorer.cpp" line="222"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存後に設定を読み戻せませんでした</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="252"/>
+        <location filename="../model/files/Restorer.cpp" line="255"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通信設定が変更されました (%1): 次回のドライバの電源投入時に有効になります。その後は新しい設定で接続してください</translation>
     </message>
@@ -12045,68 +12282,79 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunLiveState</name>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="24"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="26"/>
         <source>The drive now</source>
         <translation>現在のドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="47"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="51"/>
         <source>Alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="86"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="58"/>
+        <source>Running data</source>
+        <translation>運転データ</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/RunLiveState.cpp" line="95"/>
         <source>%1:</source>
         <translation>%1:</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="124"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="126"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
         <source>not reported</source>
         <translation>通知なし</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="129"/>
-        <location filename="../ui/run/RunLiveState.cpp" line="139"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="143"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="146"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="156"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="131"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="143"/>
+        <source>SPno%1</source>
+        <translation>SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/RunLiveState.cpp" line="148"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="134"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="151"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="136"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="153"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="172"/>
         <source>waiting for the first answer…</source>
         <translation>最初の応答を待機中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="172"/>
         <source>not watched</source>
         <translation>監視対象外</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="161"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="178"/>
         <source>Not live: %1</source>
         <translation>更新停止: %1</translation>
     </message>
@@ -12114,12 +12362,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="56"/>
+        <location filename="../model/run/RunningData.cpp" line="76"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1 は %2 r/min から %3 s で減速します: マニュアルでは、高速（約 %5 r/min 以上）から減速する場合、減速時間を %4 s より長くするよう指示されています。</translation>
     </message>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="124"/>
+        <location filename="../model/run/RunningData.cpp" line="144"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1 で高速からの減速が短すぎます（%2 r/min を %3 s）: マニュアルでは、高速（約 %5 r/min 以上）から減速する場合、減速時間を %4 s より長くするよう指示されています。</translation>
     </message>
@@ -12127,153 +12375,154 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningDataPage</name>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="39"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="40"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Running data</source>
         <translation>運転データ</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Speed (r/min)</source>
         <translation>速度 (r/min)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Acceleration (s)</source>
         <translation>加速時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="56"/>
         <source>Deceleration (s)</source>
         <translation>減速時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="56"/>
         <source>Direction</source>
         <translation>回転方向</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="68"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="69"/>
         <source>SPno%1</source>
         <translation>SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="71"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="72"/>
         <source>Selected by the inputs M0 = %1, M1 = %2, M2 = %3 or by the running data selection command</source>
         <translation>入力 M0 = %1、M1 = %2、M2 = %3 または運転データ選択コマンドで選択</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="89"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="95"/>
         <source>SS trimmer</source>
         <translation>SS トリマ</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="90"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="96"/>
         <source>SPno1 has no acceleration register: the SS trimmer on the drive sets it (0.5–30 s); it is not stored in the drive</source>
         <translation>SPno1 には加速時間のレジスタがありません: ドライバの SS トリマで設定します (0.5–30 s)。ドライバには保存されません</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="93"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
         <source>SD trimmer</source>
         <translation>SD トリマ</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="94"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="100"/>
         <source>SPno1 has no deceleration register: the SD trimmer on the drive sets it (0.5 s or 2–30 s); it is not stored in the drive</source>
         <translation>SPno1 には減速時間のレジスタがありません: ドライバの SD トリマで設定します（0.5 s または 2–30 s）。ドライバには保存されません</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="98"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="104"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="105"/>
         <source>This drive has no register for this value</source>
         <translation>このドライバにはこの値のレジスタがありません</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="106"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="112"/>
         <source>Initialize</source>
         <translation>初期化</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="108"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="114"/>
         <source>Reset SPno%1 on the drive to its factory defaults</source>
         <translation>ドライバの SPno%1 を工場出荷時設定に戻します</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="109"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="274"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="280"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="115"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="315"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="321"/>
         <source>Initialize SPno%1</source>
         <translation>SPno%1 の初期化</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="130"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="145"/>
         <source>SPno1 runs at the speed of the external speed-setting VR (CN3) with the SS/SD trimmer times; it is not stored in the drive</source>
         <translation>SPno1 は外部速度設定器 VR (CN3) の速度と SS/SD トリマの時間で運転します。ドライバには保存されません</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="214"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="255"/>
         <source>Allowed speed on this %1: %2 (0 stops the motor)</source>
         <translation>この %1 の許容速度: %2（0 でモータ停止）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="224"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="168"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="265"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="227"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="268"/>
         <source>Allowed speed: %1</source>
         <translation>許容速度: %1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="228"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
         <source>The drive&apos;s variant is not known, so a speed must suit every variant (0 stops the motor): %1</source>
         <translation>ドライバの機種が不明なため、速度は全機種に適合する必要があります（0 でモータ停止）: %1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="281"/>
         <source>its factory default</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="262"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="303"/>
         <source>The SPno1 speed and times come from the external VR and the SS/SD trimmers; they do not change.</source>
         <translation>SPno1 の速度と時間は外部 VR と SS/SD トリマで決まるため、変更されません。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="310"/>
         <source>Your unwritten edits in this row are discarded.</source>
         <translation>この行の未書込みの編集は破棄されます。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="275"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="316"/>
         <source>Reset running data SPno%1 of drive %2 to these factory defaults?</source>
         <translation>ドライバ %2 の運転データ SPno%1 をこれらの工場出荷時設定に戻しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="286"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="327"/>
         <source>Initializing SPno%1…</source>
         <translation>SPno%1 を初期化中…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="301"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="342"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 は初期化されませんでした: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="358"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 を初期化しました。%n 個の値を読み戻せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="319"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="360"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 を工場出荷時設定に初期化しました</translation>
     </message>
@@ -12281,93 +12530,93 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="64"/>
+        <location filename="../cli/ScanCommand.cpp" line="65"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>バス上のドライバを検出・識別します（局番 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="70"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>問い合わせる最初の局番、1–247（既定 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="70"/>
         <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>問い合わせる最後の局番、1–247（既定 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="73"/>
+        <location filename="../cli/ScanCommand.cpp" line="74"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>局番ごとの待ち時間 (ms)、10–5000（既定: ボーレートから算出。低速なアダプタやゲートウェイでは大きくしてください）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="75"/>
+        <location filename="../cli/ScanCommand.cpp" line="76"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="77"/>
+        <location filename="../cli/ScanCommand.cpp" line="78"/>
         <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
         <translation>見つからなかった局番を、ドライブが設定できるほかのすべての通信フォーマットでも問い合わせます（8N1 の DBU バス上の 8E1 の DC コントローラ）。形式ごとにスキャンが 1 回増えます。既定はオフ。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="92"/>
+        <location filename="../cli/ScanCommand.cpp" line="93"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>エラー: --%1 は %2–%3 の数値でなければなりません（&quot;%4&quot; は不可）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="104"/>
+        <location filename="../cli/ScanCommand.cpp" line="105"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>エラー: scan は引数を取りません。--from N --to N を使用してください</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="113"/>
+        <location filename="../cli/ScanCommand.cpp" line="114"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>エラー: --from %1 が --to %2 より後です</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="131"/>
+        <location filename="../cli/ScanCommand.cpp" line="132"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="178"/>
+        <location filename="../cli/ScanCommand.cpp" line="179"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>局番をスキャンする前に中断しました。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="180"/>
+        <location filename="../cli/ScanCommand.cpp" line="181"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>中断: 局番 %1–%2 をスキャンしました（%4 中 %3）。%5–%6 は未問い合わせです。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="194"/>
+        <location filename="../cli/ScanCommand.cpp" line="195"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>エラー: 局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="206"/>
+        <location filename="../cli/ScanCommand.cpp" line="207"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="208"/>
+        <location filename="../cli/ScanCommand.cpp" line="209"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注: %1 台のドライバが %2 ms の待ち時間の後に応答したため、再度問い合わせました。スキャンでドライバが見つからない場合は、--wait を長くしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="217"/>
+        <location filename="../cli/ScanCommand.cpp" line="218"/>
         <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
         <translation>警告: 局番 %1 は応答しましたが、さらに %2 回問い合わせても識別に失敗しました。ドライバとしては数えません。手動で追加してください: コマンドでこの局番を指定すると --timeout 内で再識別します (応答の遅い機器では長くしてください)。または通信設定を確認し、長めの --wait で再スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="226"/>
+        <location filename="../cli/ScanCommand.cpp" line="227"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -12378,109 +12627,117 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端抵抗（バスの両端に 120 Ω）とドライバの電源</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="239"/>
+        <location filename="../cli/ScanCommand.cpp" line="240"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>ヒント: %1 同じ接続に次を加えて再試行してください: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="252"/>
+        <location filename="../cli/ScanCommand.cpp" line="253"/>
         <source>Serial line: %1</source>
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="255"/>
+        <location filename="../cli/ScanCommand.cpp" line="256"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告: %1 このため、スキャンは局番ごとに最大 %2 ms 長く待ちます。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="284"/>
-        <source>%1 — variant unknown</source>
-        <translation>%1 — 機種不明</translation>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <source>warning: machine number %1 (%2) answers with garbled replies: two drives probably have the same machine number. Check the address switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
+        <translation>警告：局番 %1 (%2) の応答が壊れています。2 台のドライバが同じ局番になっている可能性があります。このバスのドライバのアドレススイッチを確認し、各ドライバに別の局番を設定して電源を入れ直し、再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="285"/>
-        <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
-        <translation>ドライバが機種を通知しません。--variant %1=VARIANT で指定してください (%2)</translation>
-    </message>
-    <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>switches</source>
         <translation>スイッチ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>state</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="308"/>
+        <location filename="../cli/ScanCommand.cpp" line="273"/>
+        <source>name</source>
+        <translation>名前</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="279"/>
         <source>comm. group</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="313"/>
+        <location filename="../cli/ScanCommand.cpp" line="284"/>
         <source>line format</source>
         <translation>通信フォーマット</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="328"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>the port&apos;s</source>
         <translation>ポートの形式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="387"/>
+        <location filename="../cli/ScanCommand.cpp" line="361"/>
         <source>1 drive found in %1 s</source>
         <translation>1 台のドライバを検出（%1 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="362"/>
         <source>%1 drives found in %2 s</source>
         <translation>%1 台のドライバを検出（%2 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="390"/>
+        <location filename="../cli/ScanCommand.cpp" line="364"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>。局番重複の可能性 1 件: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="392"/>
+        <location filename="../cli/ScanCommand.cpp" line="366"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>。局番重複の可能性 %1 件: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <location filename="../cli/ScanCommand.cpp" line="370"/>
         <source>; answered, identification failed: %1 (add by hand)</source>
         <translation>; 応答あり・識別失敗: %1 (手動で追加)</translation>
     </message>
+</context>
+<context>
+    <name>opentop::ScanDrives</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="406"/>
-        <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
-        <translation>警告: 局番 %1 (%2, %3) の応答が化けています: 2 台のドライバが同じ局番になっている可能性があります。このバス上のドライバの SW1/SW2 スイッチを確認し、各ドライバに固有の局番を設定して電源を入れ直し、再度スキャンしてください。</translation>
+        <location filename="../cli/ScanDrives.cpp" line="43"/>
+        <source>%1 — variant unknown</source>
+        <translation>%1 — 機種不明</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanDrives.cpp" line="44"/>
+        <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
+        <translation>ドライバが機種を通知しません。--variant %1=VARIANT で指定してください (%2)</translation>
     </message>
 </context>
 <context>
@@ -12858,47 +13115,47 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="60"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
         <source>Main window</source>
         <translation>メインウィンドウ</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="62"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="36"/>
         <source>Everywhere, dialogs included</source>
         <translation>すべての場所（ダイアログを含む）</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="37"/>
         <source>STOP ALL (stop every drive on the bus)</source>
         <translation>全停止（バス上の全ドライバを停止）</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="72"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="73"/>
         <source>Keyboard shortcuts</source>
         <translation>キーボードショートカット</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Where</source>
         <translation>場所</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Command</source>
         <translation>コマンド</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Keys</source>
         <translation>キー</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="86"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="87"/>
         <source> or </source>
         <translation> または </translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="95"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="96"/>
         <source>STOP ALL&apos;s keys work in every window of the program, also while a dialog is open.</source>
         <translation>全停止のキーは、ダイアログ表示中も含め、プログラムのすべてのウィンドウで有効です。</translation>
     </message>
@@ -13647,9 +13904,19 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpnoSelector</name>
     <message>
-        <location filename="../ui/run/SpnoSelector.cpp" line="62"/>
+        <location filename="../ui/run/SpnoSelector.cpp" line="29"/>
+        <source>The running data that Select running data sends; &quot;The drive now&quot; shows the running data the drive runs</source>
+        <translation>「運転データを選択」で送信する運転データです。ドライバが実行中の運転データは「現在のドライバ」に表示されます</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/SpnoSelector.cpp" line="70"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/SpnoSelector.cpp" line="84"/>
+        <source>The running data that Select running data sends. The drive reported SPno%1 at %2; &quot;The drive now&quot; shows what it runs now.</source>
+        <translation>「運転データを選択」で送信する運転データです。ドライバは %2 に SPno%1 と報告しました。現在の運転データは「現在のドライバ」に表示されます。</translation>
     </message>
 </context>
 <context>
@@ -13668,77 +13935,77 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StartPreview</name>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="110"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="110"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="149"/>
+        <location filename="../model/run/StartPreview.cpp" line="154"/>
         <source>communication group of %1</source>
         <translation>%1 の通信グループ</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="177"/>
+        <location filename="../model/run/StartPreview.cpp" line="182"/>
         <source>It runs with running data SPno%1</source>
         <translation>運転データ: SPno%1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="179"/>
+        <location filename="../model/run/StartPreview.cpp" line="184"/>
         <source> at %1</source>
         <translation> 速度 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="182"/>
+        <location filename="../model/run/StartPreview.cpp" line="187"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>、回転方向 %1（その後に送信した回転方向指令）</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="183"/>
+        <location filename="../model/run/StartPreview.cpp" line="188"/>
         <source>, direction %1</source>
         <translation>、回転方向 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="186"/>
+        <location filename="../model/run/StartPreview.cpp" line="191"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>どの運転データで運転するかを読み出せませんでした。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="194"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="191"/>
+        <location filename="../model/run/StartPreview.cpp" line="196"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>運転開始は局番 %1 にも届きます: %2。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="195"/>
+        <location filename="../model/run/StartPreview.cpp" line="202"/>
         <source>Not read: %1.</source>
         <translation>未読出し: %1。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="207"/>
+        <location filename="../model/run/StartPreview.cpp" line="219"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>局番 %1 のモータを起動します。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="209"/>
+        <location filename="../model/run/StartPreview.cpp" line="221"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>局番 %1 の速度指令を %2 に設定します: モータが運転します。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="213"/>
+        <location filename="../model/run/StartPreview.cpp" line="225"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>機械の近くに人がいないこと、機械が動いてもよいことを確認してください。全停止でいつでも全ドライバを停止できます。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="216"/>
+        <location filename="../model/run/StartPreview.cpp" line="228"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>プログラム実行中、ドライバごとに 1 回確認します。</translation>
     </message>
@@ -13841,37 +14108,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>全ドライバに停止を送信しました。バス上に既知のドライバがないため、停止は確認していません。確認するにはバスをスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="96"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="97"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>局番 %1: %2 s 後に停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="99"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="100"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>局番 %1: まだ運転中 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="102"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>局番 %1: 応答なし、停止未確認</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全停止: 停止ブロードキャストに失敗しました</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全停止: 停止を送信、ドライバは未確認</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全停止: 全ドライバ停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="121"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全停止: 停止が確認できないドライバがあります</translation>
     </message>
@@ -14046,92 +14313,97 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TestRunPanel</name>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="45"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="48"/>
         <source>&lt;b&gt;Test run of machine number %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;局番 %1 の試運転&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="50"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="53"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>局番 %1 は既知のファミリのドライバとして識別されていません。試運転には識別が必要です。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="31"/>
         <source>&amp;Start</source>
         <translation>運転開始(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="32"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="33"/>
         <source>&amp;CW</source>
         <translation>&amp;CW</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="34"/>
         <source>CC&amp;W</source>
         <translation>CC&amp;W</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="35"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="36"/>
         <source>&amp;Free</source>
         <translation>フリー(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="141"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="54"/>
         <source>Se&amp;lect running data</source>
         <translation>運転データ選択(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="152"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="67"/>
         <source>Return to &amp;I/O priority</source>
         <translation>I/O 優先に戻す(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="154"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="69"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>運転、停止、回転方向、速度選択をドライバの入力端子に戻します</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="200"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="160"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>ドライバが運転コマンドを受け付けるかを確認するための %1 を読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="236"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="196"/>
+        <source>Not started: the variant of %1 was not given.</source>
+        <translation>起動していません：%1 の機種が指定されていません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/TestRunPanel.cpp" line="203"/>
         <source>Reading what the start will run…</source>
         <translation>運転開始時の動作を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="252"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="219"/>
         <source>Start the motor</source>
         <translation>モータの運転開始</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="266"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="233"/>
         <source>Sending %1…</source>
         <translation>%1 を送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="295"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="262"/>
         <source>Not every drive of its communication group runs: see below.</source>
         <translation>通信グループのすべてのドライバが運転しているわけではありません。下を参照してください。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="280"/>
         <source>Sent: %1</source>
         <translation>送信済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="382"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="349"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>ポーリングが一時停止中です: コントローラは最後のフレームを受信してから %1 s 後にモータにブレーキをかけます (%2)。モータの運転を続けるにはポーリングを再開してください。</translation>
     </message>
@@ -15106,23 +15378,23 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="32"/>
-        <location filename="../ui/trends/TrendChart.cpp" line="58"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="33"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="59"/>
         <source>Time (hh:mm:ss)</source>
         <translation>時刻 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="105"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="109"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="296"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="300"/>
         <source>There is no trend data to export yet.</source>
         <translation>エクスポートするトレンドデータがまだありません。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="309"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="313"/>
         <source>Cannot write the picture %1.</source>
         <translation>画像 %1 を書き込めません。</translation>
     </message>
@@ -16463,6 +16735,77 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/profile/ValueCodec.cpp" line="489"/>
         <source>unknown code %1</source>
         <translation>不明なコード %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantNeed</name>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="19"/>
+        <source>%1 and %2 more</source>
+        <translation>%1 ほか %2 件</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="69"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="77"/>
+        <source>Allowed %1 — %2</source>
+        <translation>許容値 %1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="94"/>
+        <source>The allowed values of the settings you are changing depend on it.</source>
+        <translation>変更しようとしている設定の許容値は機種によって異なります。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="97"/>
+        <source>The backup file records it, and a restore checks the values against it.</source>
+        <translation>バックアップファイルに機種が記録され、復元時にはそれに基づいて値を検査します。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="100"/>
+        <source>The speeds the motor may run at depend on it.</source>
+        <translation>モータが運転できる速度は機種によって異なります。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="104"/>
+        <source>Which drive is %1? It reports only &quot;%2&quot;, not whether it is a %3.</source>
+        <translation>%1 はどのドライバですか？「%2」としか報告せず、%3 のどれかは報告しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="105"/>
+        <source> or </source>
+        <translation> または </translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="108"/>
+        <source>Read it on the drive&apos;s rating plate. It is kept for this bus and asked once; without it every value must suit all of them.</source>
+        <translation>ドライバの銘板で確認してください。このバスに保存され、一度だけ尋ねます。指定しない場合は、すべての値がすべての機種に適合する必要があります。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="112"/>
+        <source>Last time on this bus it was set as %1.</source>
+        <translation>前回このバスでは %1 に設定されていました。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantQuestion</name>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="29"/>
+        <source>Which drive is it?</source>
+        <translation>どのドライバですか？</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="41"/>
+        <source>Not known: check against every variant</source>
+        <translation>不明：すべての機種で検査</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
+        <source>the variant of %1 was not given</source>
+        <translation>%1 の機種が指定されていません</translation>
     </message>
 </context>
 <context>

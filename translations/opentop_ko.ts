@@ -86,107 +86,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="69"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="70"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="89"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="90"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="92"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="94"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="95"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="97"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="98"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="104"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="105"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="108"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="109"/>
         <source>%1: no records.</source>
         <translation>%1: 기록 없음.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="111"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="112"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Panel</source>
         <translation>패널</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="123"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="124"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="130"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="131"/>
         <source>Cause: %1</source>
         <translation>원인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="133"/>
         <source>Remedy: %1</source>
         <translation>조치: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="135"/>
         <source>To clear: %1</source>
         <translation>해제 방법: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="140"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="141"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>통신 오류 레지스터(%1): 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="144"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="145"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>통신 오류 레지스터(%1): 없음(0).</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="147"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="148"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>통신 오류 레지스터(%1): %2, 알 수 없는 코드.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="151"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="152"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -260,192 +260,192 @@
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="49"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
         <source>top level</source>
         <translation>최상위</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="54"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot;는 1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="62"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot;는 소문자 ID여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="70"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="72"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity는 N, E, O 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud는 1200–115200, stopBits는 1 또는 2여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="86"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="88"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats: &quot;%1&quot;은(는) 8N1, 8E1 같은 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="92"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats에 기본 형식 %1이(가) 있어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="96"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs는 0–60000이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="107"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters는 1–125, maxWriteRegisters는 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves는 1–247 범위여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="124"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1]에는 id, model, label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot;가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="137"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="139"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1]에는 고유한 id와 label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="148"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="150"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1]에는 function 3 또는 4와 first ≤ last가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="192"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
         <source>%1 has no name</source>
         <translation>%1에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset은 %2 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="197"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="199"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: 코드 %2가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot;은(는) 명령 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="220"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 기본값이 허용 값에 포함되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="224"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: 비트 필드 &quot;%2&quot;: 기능 &quot;%3&quot;은(는) 읽을 수 있는 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;에 대한 조건</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2일 때는 기본값이 허용되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="243"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1이(가) 주소 0xFFFF를 넘어갑니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1이(가) 0x%3에서 &quot;%2&quot;와(과) 겹칩니다(레지스터 %4개)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="270"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot;은(는) identify 읽기 범위 안의 파라미터여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="273"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch가 올바른 정규식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="285"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="313"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1은(는) 파라미터 이름, 이름 목록 또는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="322"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot;에 비트 필드 &quot;%3&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="328"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="346"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs에는 &quot;selected&quot; 역할이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1에는 &quot;selected&quot;와 &quot;maxSeconds&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="365"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2은(는) &quot;selected&quot; 역할의 값이 아니거나 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="370"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot;는 0보다 크고 600 이하여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="402"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot;는 %2 중 하나여야 하며 각각 한 번만 쓸 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="405"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot;는 #rrggbb 형식이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot;과 &quot;meaning&quot;은 비어 있으면 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="57"/>
         <source> and %1 more</source>
         <translation> 외 %1개</translation>
     </message>
@@ -471,6 +471,29 @@
         <location filename="../ui/help/AboutDialog.cpp" line="45"/>
         <source>About &amp;Qt</source>
         <translation>Qt 정보(&amp;Q)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AddressSwitches</name>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="66"/>
+        <source>address.names: every switch needs a name</source>
+        <translation>address.names: 모든 스위치에 이름이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="74"/>
+        <source>address.switches must be &quot;hex-rotary&quot; or &quot;binary-dip&quot;</source>
+        <translation>address.switches는 &quot;hex-rotary&quot; 또는 &quot;binary-dip&quot;이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="78"/>
+        <source>address.names: 1–%1 switches for this notation</source>
+        <translation>address.names: 이 표기법에는 스위치 1–%1개</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="81"/>
+        <source>address: the switches (%1) cannot set machine number %2</source>
+        <translation>address: 스위치(%1)로는 국번 %2을(를) 설정할 수 없습니다</translation>
     </message>
 </context>
 <context>
@@ -526,84 +549,89 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Machine</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Kind</source>
         <translation>종류</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Record</source>
         <translation>기록</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
         <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <source>Machine name</source>
+        <translation>기계 이름</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Panel code</source>
         <translation>패널 코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Cause</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Remedy</source>
         <translation>조치</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="49"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>warning</source>
         <translation>경고</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="58"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="59"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="105"/>
         <source>machine %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="128"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>드라이버 %1대의 기록 %n건을 %2에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="133"/>
         <source>Not everything could be read: %1</source>
         <translation>일부를 읽지 못했습니다: %1</translation>
     </message>
@@ -678,92 +706,92 @@
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="163"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="164"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>알람·경고 이력을 원인과 조치와 함께 표시합니다. 리셋, 삭제</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="170"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="171"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>알람 리셋 명령을 보낸 뒤, 알람이 해제되었는지 전원 재투입이 필요한지 알려줍니다(--yes 필요; 알람이 계속 발생 중이면 종료 코드 4).</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>알람·경고 기록을 삭제합니다(--yes 필요).</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>--reset과 --clear-records를 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="184"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="185"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>오류: 사용법: %1 (국번 하나)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="192"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="193"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="198"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="199"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>오류: 국번 %1(%2)은(는) 알람·경고 기록을 보관하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="205"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="206"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>오류: %1 드라이버에는 %2 명령이 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
         <source>alarm reset</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
         <source>record erase</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="218"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="219"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>다음은 국번 %1의 설정을 변경합니다. 보내려면 --yes를 추가하십시오:</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="222"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="223"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 원인이 제거되었고 전원 재투입으로만 해제되는 알람이 아니면 발생 중인 알람을 해제합니다</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="246"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="248"/>
         <source>Machine number %1 (%2)</source>
         <translation>국번 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="272"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="276"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="295"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="298"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="306"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -771,143 +799,143 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
         <source>&amp;Re-read</source>
         <translation>다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
         <source>Reset &amp;alarm…</source>
         <translation>알람 리셋(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="62"/>
         <source>&amp;Clear records…</source>
         <translation>기록 삭제(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="65"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>국번 %1의 알람과 경고 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Panel</source>
         <translation>패널</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="109"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="111"/>
         <source>Cause and remedy</source>
         <translation>원인 및 조치</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="110"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="112"/>
         <source>Communication error register</source>
         <translation>통신 오류 레지스터</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>알람 리셋 명령을 보냅니다. 알람이 해제되었는지, 전원 재투입으로만 해제되는지 알려줍니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>드라이버에 보관된 알람·경고 기록을 삭제합니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="301"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="132"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="303"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>원인과 조치를 보려면 기록을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
         <source>Not read yet.</source>
         <translation>아직 읽지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="135"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>이 드라이버는 알람·경고 기록을 보관하지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="163"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="165"/>
         <source>Alarm state: %1</source>
         <translation>알람 상태: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="255"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
         <source>Reading the records…</source>
         <translation>기록을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="277"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="278"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="280"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="282"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="284"/>
         <source>Could not be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>This drive has no communication error register.</source>
         <translation>이 드라이버에는 통신 오류 레지스터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: could not be read.</source>
         <translation>%1: 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>%1: no error (0).</source>
         <translation>%1: 오류 없음(0).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="315"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1: %2, 알 수 없는 코드.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="319"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -916,153 +944,153 @@ Remedy: %5</source>
 조치: %5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
         <source>No alarm records</source>
         <translation>알람 기록 없음</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
         <source>No warning records</source>
         <translation>경고 기록 없음</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="337"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="338"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="340"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="349"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="351"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="378"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>기록 %1: 코드 %2이(가) %3 표에 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="383"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2 (기록 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
         <source>Cause: %1</source>
         <translation>원인: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
         <source>Remedy: %1</source>
         <translation>조치: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="391"/>
         <source>To clear: %1</source>
         <translation>해제 방법: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="420"/>
         <source>Writes: %1</source>
         <translation>쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>원인이 제거되었으면 발생 중인 알람을 해제합니다. 일부 알람은 전원 재투입으로만 해제되며, 결과에 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="428"/>
         <source>Reset alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="427"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>국번 %1에 알람 리셋 명령을 보내시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="433"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="435"/>
         <source>Sending the alarm reset…</source>
         <translation>알람 리셋을 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="441"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="442"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="444"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>드라이버 전원을 끄고 5 s 기다린 뒤 다시 켜십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (기록 %2건)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>the alarm and warning records</source>
         <translation>알람·경고 기록</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="456"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
         <source>Clear records</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source>Erase %1 of machine %2?</source>
         <translation>국번 %2의 %1을(를) 삭제하시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source> and </source>
         <translation> 및 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="458"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="461"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>삭제한 기록은 복원할 수 없습니다. 쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="463"/>
         <source>Erase</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
         <source>Erasing the records…</source>
         <translation>기록을 삭제하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="479"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="482"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="484"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -1328,160 +1356,157 @@ Remedy: %5</source>
     </message>
 </context>
 <context>
-    <name>opentop::BackupDevice</name>
-    <message>
-        <location filename="../model/files/BackupDevice.cpp" line="75"/>
-        <source>drive %1 (%2)</source>
-        <translation>드라이버 %1 (%2)</translation>
-    </message>
-</context>
-<context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>&amp;Cancel</source>
         <translation>취소(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
         <source>&amp;Save the drives read</source>
         <translation>읽은 드라이버 저장(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="32"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Back up drives</source>
         <translation>드라이버 백업</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Progress</source>
         <translation>진행</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="41"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>읽은 드라이버만 저장합니다. 나머지는 제외됩니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="43"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
         <source>Stop after the drive being read</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="89"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="72"/>
+        <source>Nothing was read: %1.</source>
+        <translation>아무것도 읽지 않았습니다: %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/BackupDialog.cpp" line="97"/>
         <source>Waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="93"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="101"/>
         <source>%v of %m drives</source>
         <translation>드라이버 %m대 중 %v대</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="94"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>드라이버 %n대의 설정을 읽는 중…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="104"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
         <source>Stopping after the drive being read…</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="121"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
         <source>Not read (cancelled)</source>
         <translation>읽지 않음(취소됨)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="131"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>드라이버 %1: 식별되지 않아 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="132"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
         <source>Not identified</source>
         <translation>식별 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="148"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>설정 %n개 읽음, %1 ms</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="159"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
         <source>Value not allowed</source>
         <translation>허용되지 않는 값</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
         <source>Read failed</source>
         <translation>읽기 실패</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="182"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>읽지 못한 드라이버: %1. 아직 아무것도 저장하지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="188"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="196"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>읽은 드라이버 %n대를 저장하시겠습니까?</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="212"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>드라이버 %n대를 %1에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="218"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="226"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>제외됨(읽지 못함): 드라이버 %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="222"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="230"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -1489,7 +1514,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="290"/>
+        <location filename="../model/files/BackupFile.cpp" line="309"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1이(가) 백업 파일의 최대 크기 %2 MB보다 큽니다(드라이버 247대의 백업도 훨씬 작음). 백업 파일이 아닙니다</translation>
     </message>
@@ -1497,122 +1522,132 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFileParser</name>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="48"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="49"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON 파일이 아닙니다: 바이트 %2에서 %1</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="52"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="53"/>
         <source>not an OpenTOP backup file: the JSON is not an object</source>
         <translation>OpenTOP 백업 파일이 아닙니다: JSON이 객체가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="62"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="63"/>
         <source>&quot;created&quot; is not an ISO 8601 date and time</source>
         <translation>&quot;created&quot;가 ISO 8601 날짜·시간이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="74"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="75"/>
         <source>the file holds no drives (&quot;devices&quot; must be a non-empty list)</source>
         <translation>파일에 드라이버가 없습니다(&quot;devices&quot;는 비어 있지 않은 목록이어야 합니다)</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="81"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="82"/>
         <source>%1: not a drive</source>
         <translation>%1: 드라이버가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="83"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="84"/>
         <source>machine number %1 appears twice</source>
         <translation>국번 %1이(가) 두 번 나옵니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="97"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="98"/>
         <source>not an OpenTOP backup file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP 백업 파일이 아닙니다(&quot;format&quot;이 &quot;%2&quot;이(가) 아니라 &quot;%1&quot;입니다)</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="99"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="100"/>
         <source>not an OpenTOP backup file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP 백업 파일이 아닙니다(&quot;format&quot;: &quot;%1&quot; 없음)</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="104"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="105"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot;은 1 이상의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="106"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="107"/>
         <source>written by a newer OpenTOP (format version %1); this version reads format version %2</source>
         <translation>더 새로운 OpenTOP에서 저장한 파일입니다(형식 버전 %1). 이 버전은 형식 버전 %2을(를) 읽습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="112"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="113"/>
         <source>the file has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>파일에 체크섬이 없습니다(&quot;checksum&quot;: &quot;sha256:…&quot;). OpenTOP에서 저장한 파일이 아니거나 저장 후 변경되었습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="117"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="118"/>
         <source>the file was changed after it was written (checksum mismatch)</source>
         <translation>파일이 저장된 후 변경되었습니다(체크섬 불일치)</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="127"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
         <source>%1: &quot;slave&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;slave&quot;는 국번 1–247이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="129"/>
         <source>%1 (machine number %2)</source>
         <translation>%1 (국번 %2)</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="132"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="133"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 제품군 &quot;%2&quot;; 알려진 제품군: %3</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="137"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="138"/>
         <source>%1: &quot;variant&quot; must be text or null</source>
         <translation>%1: &quot;variant&quot;는 텍스트 또는 null이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="142"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="143"/>
         <source>%1: unknown variant &quot;%2&quot; of family %3; known: %4</source>
         <translation>%1: 제품군 %3의 알 수 없는 기종 &quot;%2&quot;; 알려진 기종: %4</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="144"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="145"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="151"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="153"/>
+        <source>%1: &quot;machineName&quot; must be text</source>
+        <translation>%1: &quot;machineName&quot;은(는) 텍스트여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BackupFileParser.cpp" line="155"/>
+        <source>%1: &quot;machineName&quot;: %2</source>
+        <translation>%1: &quot;machineName&quot;: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BackupFileParser.cpp" line="160"/>
         <source>%1: &quot;parameters&quot; must be a list</source>
         <translation>%1: &quot;parameters&quot;는 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="171"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="180"/>
         <source>%1: no &quot;name&quot;</source>
         <translation>%1: &quot;name&quot; 없음</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="174"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="183"/>
         <source>%1 %2: &quot;registers&quot; must be a list</source>
         <translation>%1 %2: &quot;registers&quot;는 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="178"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="187"/>
         <source>%1 %2: registers must be numbers 0–65535</source>
         <translation>%1 %2: 레지스터 값은 0–65535의 숫자여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="184"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="193"/>
         <source>%1 %2: address &quot;%3&quot;, but the %4 profile has it at %5</source>
         <translation>%1 %2: 주소가 &quot;%3&quot;이지만 %4 프로파일에서는 %5입니다</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="209"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="218"/>
         <source>%1: %2: &quot;value&quot; %3 does not match its registers (%4)</source>
         <translation>%1: %2: &quot;value&quot; %3이(가) 레지스터 값(%4)과 일치하지 않습니다</translation>
     </message>
@@ -1772,28 +1807,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="27"/>
+        <location filename="../ui/main/BusDocks.cpp" line="28"/>
         <source>Traffic log</source>
         <translation>통신 로그</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="34"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Bus overview</source>
         <translation>버스 개요</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="35"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
         <source>Trends</source>
         <translation>트렌드</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="36"/>
+        <location filename="../ui/main/BusDocks.cpp" line="37"/>
         <source>Communication groups</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="39"/>
-        <location filename="../ui/main/BusDocks.cpp" line="77"/>
+        <location filename="../ui/main/BusDocks.cpp" line="40"/>
+        <location filename="../ui/main/BusDocks.cpp" line="110"/>
         <source>Not connected</source>
         <translation>연결 안 됨</translation>
     </message>
@@ -1801,53 +1836,87 @@ Drives: %5</source>
 <context>
     <name>opentop::BusGroups</name>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="108"/>
+        <location filename="../model/bus/BusGroups.cpp" line="109"/>
         <source>machine number %1 is the parent of communication group %1: what is sent to it is also executed by %2 (children do not reply)</source>
         <translation>국번 %1은(는) 통신 그룹 %1의 부모입니다: 이 국번으로 보내는 내용은 %2에서도 실행됩니다(자식은 응답하지 않음)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="118"/>
+        <location filename="../model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="136"/>
         <source>%1 and %2</source>
         <translation>%1 및 %2</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="145"/>
         <source>This also reaches machine number %1 (the child of communication group %2; it executes it without replying).</source>
         <translation>이 내용은 국번 %1에도 전달됩니다(통신 그룹 %2의 자식; 응답 없이 실행함).</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="131"/>
+        <location filename="../model/bus/BusGroups.cpp" line="149"/>
         <source>This also reaches machine numbers %1 (the children of communication group %2; they execute it without replying).</source>
         <translation>이 내용은 국번 %1에도 전달됩니다(통신 그룹 %2의 자식; 응답 없이 실행함).</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="141"/>
+        <location filename="../model/bus/BusGroups.cpp" line="159"/>
         <source>child of %1</source>
         <translation>%1의 자식</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="144"/>
+        <location filename="../model/bus/BusGroups.cpp" line="162"/>
         <source>parent of %1</source>
         <translation>%1의 부모</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="152"/>
+        <location filename="../model/bus/BusGroups.cpp" line="170"/>
         <source>machine number %1 is a child of %2 and itself a parent: a child must not be a group parent</source>
         <translation>국번 %1은(는) %2의 자식이면서 부모입니다: 자식은 그룹 부모가 될 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="157"/>
+        <location filename="../model/bus/BusGroups.cpp" line="175"/>
         <source>machine number %1 is in communication group %2, but no drive %2 is known: frames to %2 reach %1 although nothing answers</source>
         <translation>국번 %1은(는) 통신 그룹 %2에 속해 있지만 드라이버 %2이(가) 알려져 있지 않습니다: 아무도 응답하지 않아도 %2(으)로 보낸 프레임이 %1에 전달됩니다</translation>
     </message>
 </context>
 <context>
-    <name>opentop::BusListModel</name>
+    <name>opentop::BusListMenu</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
-        <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
-        <translation>드라이버의 로터리 스위치 SW1(상위 자리)과 SW2(하위 자리)에 설정된 16진수 국번</translation>
+        <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
+        <source>&amp;Name this machine…</source>
+        <translation>이 기계에 이름 지정(&amp;N)…</translation>
     </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="35"/>
+        <source>&amp;Identify again</source>
+        <translation>다시 식별(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="46"/>
+        <source>&amp;Remove from list</source>
+        <translation>목록에서 제거(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="61"/>
+        <source>Name of %1 (up to %2 characters; empty removes the name):</source>
+        <translation>%1의 이름(최대 %2자, 비우면 이름 삭제):</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="67"/>
+        <source>Name this machine</source>
+        <translation>이 기계에 이름 지정</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="74"/>
+        <source>Machine number %1 has no name now.</source>
+        <translation>국번 %1은(는) 이제 이름이 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="75"/>
+        <source>Machine number %1 is now named %2.</source>
+        <translation>국번 %1의 이름이 이제 %2입니다.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::BusListModel</name>
     <message>
         <location filename="../ui/bus/BusListModel.cpp" line="75"/>
         <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
@@ -1869,91 +1938,113 @@ Drives: %5</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
-        <source>Hex / switches</source>
-        <translation>16진수 / 스위치</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
         <source>Family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="98"/>
         <source>Control priority</source>
         <translation>제어 우선순위</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="111"/>
-        <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
-        <translation>두 드라이버가 국번 %1을(를) 함께 쓰고 있을 수 있습니다(%2, %3): 라인의 모든 드라이버의 SW1/SW2 스위치를 확인하고, 드라이버마다 다른 국번을 준 뒤 전원을 재투입하십시오. 종단 저항 불량이나 A/B 선이 바뀐 경우에도 응답이 깨집니다.</translation>
+        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
+        <source>How each drive&apos;s machine number is set on its switches:
+%1</source>
+        <translation>각 드라이버의 국번을 스위치로 설정하는 방법:
+%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <source>Switches</source>
+        <translation>스위치</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="100"/>
+        <source>Name</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="112"/>
+        <source>Two drives may share machine number %1 (%2): check the address switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
+        <translation>두 드라이버가 국번 %1(%2)을(를) 함께 쓰고 있을 수 있습니다: 라인의 모든 드라이버의 주소 스위치를 확인하고, 드라이버마다 다른 국번을 지정한 뒤 전원을 다시 켜십시오. 종단 저항 불량이나 A/B 반대 결선도 응답을 손상시킵니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
         <source>%1 at %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="137"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="135"/>
         <location filename="../ui/bus/BusListModel.cpp" line="139"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="145"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="147"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>상태등 %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="174"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>드라이버 매뉴얼: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="173"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="177"/>
         <source>Status light grey: not live — %1</source>
         <translation>상태등 회색: 실시간 아님 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <source>No name yet: Name… in the context menu (F2) names this machine</source>
+        <translation>아직 이름이 없습니다: 컨텍스트 메뉴의 이름 지정…(F2)으로 이 기계에 이름을 붙입니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
+        <source>%1: the name given to this machine (F2 changes it)</source>
+        <translation>%1: 이 기계에 붙인 이름(F2로 변경)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="189"/>
         <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
         <translation>이 드라이브로 가는 요청은 포트의 형식이 아니라 드라이브 자체의 통신 형식 %1(으)로 나갑니다. 라인은 트랜잭션 사이에 그 형식으로 전환되었다가 다시 돌아옵니다. 컨텍스트 메뉴의 「통신 형식…」에서 변경하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="196"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 올바른 한계값으로 값을 검사하도록 컨텍스트 메뉴(기종)에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="194"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="205"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>드라이버가 I/O 단자로 운전 명령을 받고 있습니다. 버스를 통한 시운전에는 통신 우선이 필요합니다.</translation>
     </message>
@@ -1961,7 +2052,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../model/bus/BusMemory.cpp" line="44"/>
+        <location filename="../model/bus/BusMemory.cpp" line="73"/>
         <source>the simulated bus</source>
         <translation>시뮬레이션 버스</translation>
     </message>
@@ -2045,137 +2136,144 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="34"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
         <source>&amp;Scan</source>
         <translation>스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
         <source>A&amp;dd drive…</source>
         <translation>드라이버 추가(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="39"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="40"/>
         <source>Ca&amp;ncel</source>
         <translation>취소(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>범위 안의 모든 국번에 응답 여부를 묻습니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
         <source>&amp;from</source>
         <translation>시작(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="54"/>
         <source>&amp;to</source>
         <translation>끝(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="57"/>
-        <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
-        <translation>국번 1–247 (DBU의 SW1/SW2 스위치는 16진수)</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="74"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>국번 하나를 식별하여 목록에 추가합니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="193"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="220"/>
         <source>%v of %m</source>
         <translation>%m 중 %v</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="83"/>
         <source>Scan progress</source>
         <translation>스캔 진행</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="85"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>전송 중인 요청이 끝나면 스캔을 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="91"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="94"/>
         <source>Rescan at %1</source>
         <translation>%1(으)로 다시 스캔</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="118"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="134"/>
         <source>Drives on the bus</source>
         <translation>버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="179"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="150"/>
+        <source>Name this machine…</source>
+        <translation>이 기계에 이름 지정…</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="206"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%m 중 %v (국번 %1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="210"/>
         <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
         <translation>국번 %1이(가) 응답했지만 식별에 실패했습니다: 재시도 중(%3회 중 %2회째)… 폴링은 스캔이 끝날 때까지 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="222"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms… 폴링은 스캔이 끝날 때까지 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="294"/>
         <source>If one is on this bus, add it with Add drive and its line format.</source>
         <translation>버스에 이런 드라이브가 있으면 「드라이브 추가」로 통신 형식과 함께 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="299"/>
         <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
         <translation>국번 %1이(가) 응답했지만 다시 물어도 식별에 실패했습니다: [드라이버 추가…]로 직접 추가하거나, 통신 설정을 확인한 뒤 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="215"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>전송 중인 요청이 끝나면 취소합니다…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="233"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="59"/>
+        <source>Machine numbers 1–247, as set on each drive&apos;s switches:
+%1</source>
+        <translation>국번 1–247, 각 드라이버의 스위치 설정:
+%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="260"/>
         <source>Did not answer the last scan.</source>
         <translation>마지막 스캔에서 응답하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="239"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="266"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="244"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>국번 %1–%2 스캔 후 취소됨(%4 중 %3): 드라이버 %n대 발견.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="252"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="279"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>국번 %1–%2에서 드라이버 %n대 발견(%3 s).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="293"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="320"/>
         <source>Asking machine number %1…</source>
         <translation>국번 %1에 묻는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="298"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="325"/>
         <source>Machine number %1: %2 added.</source>
         <translation>국번 %1: %2 추가됨.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="327"/>
         <source>Machine number %1: %2 %3</source>
         <translation>국번 %1: %2 %3</translation>
     </message>
@@ -2184,46 +2282,36 @@ Drives: %5</source>
         <source>&amp;Variant</source>
         <translation>기종(&amp;V)</translation>
     </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="349"/>
-        <source>&amp;Identify again</source>
-        <translation>다시 식별(&amp;I)</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="360"/>
-        <source>&amp;Remove from list</source>
-        <translation>목록에서 제거(&amp;R)</translation>
-    </message>
 </context>
 <context>
     <name>opentop::BusRecallBar</name>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="20"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="21"/>
         <source>&amp;Scan the bus</source>
         <translation>버스 스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="42"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="43"/>
         <source>Last time on %1: %2.</source>
         <translation>지난번 %1: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>지난번 드라이버 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>지난번 드라이버 %1대 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>지난번에 설정한 기종으로 이 국번들의 드라이버를 다시 식별합니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="60"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="61"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1에서 아직 알려진 드라이버가 없습니다. 버스를 스캔하여 드라이버를 찾으십시오.</translation>
     </message>
@@ -2231,22 +2319,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="222"/>
-        <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
-        <translation>응답이 두 번 깨짐(%1): 두 드라이버가 국번 %2을(를) 함께 쓰고 있을 가능성이 큽니다. SW1/SW2 스위치를 확인하십시오</translation>
+        <location filename="../model/bus/BusScanner.cpp" line="223"/>
+        <source>garbled replies twice (%1): two drives probably share machine number %2; check their address switches (%3)</source>
+        <translation>손상된 응답 2회(%1): 두 드라이버가 국번 %2을(를) 함께 쓰고 있을 가능성이 큽니다. 주소 스위치를 확인하십시오(%3)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="227"/>
+        <location filename="../model/bus/BusScanner.cpp" line="229"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>응답은 있지만 일치하는 장치 프로파일이 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="245"/>
+        <location filename="../model/bus/BusScanner.cpp" line="247"/>
         <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
         <translation>응답은 있지만 식별 읽기에 응답이 없습니다(%1). %2번 더 물어도 마찬가지입니다: 직접 추가하거나 대기 시간을 늘려 다시 스캔하십시오</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="311"/>
+        <location filename="../model/bus/BusScanner.cpp" line="333"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>처음에 늦게 응답했습니다(%1 ms 대기 후). 대기 시간을 늘리면 이 버스의 스캔이 안정됩니다</translation>
     </message>
@@ -2605,49 +2693,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="90"/>
-        <location filename="../cli/CliContext.cpp" line="104"/>
-        <location filename="../cli/CliContext.cpp" line="112"/>
+        <location filename="../cli/CliContext.cpp" line="91"/>
+        <location filename="../cli/CliContext.cpp" line="105"/>
+        <location filename="../cli/CliContext.cpp" line="113"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="117"/>
+        <location filename="../cli/CliContext.cpp" line="118"/>
         <source>serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="142"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="204"/>
+        <location filename="../cli/CliContext.cpp" line="224"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="209"/>
+        <location filename="../cli/CliContext.cpp" line="229"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="264"/>
+        <location filename="../cli/CliContext.cpp" line="287"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="268"/>
+        <location filename="../cli/CliContext.cpp" line="291"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="286"/>
+        <location filename="../cli/CliContext.cpp" line="309"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="296"/>
+        <location filename="../cli/CliContext.cpp" line="319"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -2721,100 +2809,100 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="34"/>
+        <location filename="../cli/CompareCommand.cpp" line="35"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>서로 다른 설정을 표시합니다. A, B: 국번, FILE 또는 FILE:ID (차이 유무와 관계없이 종료 코드 0)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="41"/>
+        <location filename="../cli/CompareCommand.cpp" line="42"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>A를 프로파일의 공장 출하값과 비교합니다. 매뉴얼에 기본값이 없는 설정은 목록에 표시하지만 차이로 세지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="54"/>
-        <location filename="../cli/CompareCommand.cpp" line="88"/>
-        <location filename="../cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="55"/>
+        <location filename="../cli/CompareCommand.cpp" line="90"/>
+        <location filename="../cli/CompareCommand.cpp" line="148"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="67"/>
+        <location filename="../cli/CompareCommand.cpp" line="68"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="72"/>
+        <location filename="../cli/CompareCommand.cpp" line="73"/>
         <source>error: %1: cannot read %2</source>
         <translation>오류: %1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="76"/>
+        <location filename="../cli/CompareCommand.cpp" line="77"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="107"/>
+        <location filename="../cli/CompareCommand.cpp" line="109"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>오류: %1에 드라이버가 여러 대 있습니다(%2): %1:ID 형식으로 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="110"/>
+        <location filename="../cli/CompareCommand.cpp" line="112"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>오류: %1에 국번 %2인 드라이버가 없습니다. 포함된 드라이버: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="126"/>
+        <location filename="../cli/CompareCommand.cpp" line="128"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>오류: compare A B 또는 compare A --defaults (A, B: 국번, FILE 또는 FILE:ID)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="171"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="172"/>
+        <location filename="../cli/CompareCommand.cpp" line="174"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
-        <location filename="../cli/CompareCommand.cpp" line="178"/>
+        <location filename="../cli/CompareCommand.cpp" line="179"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="185"/>
         <source>no differences (%1 settings compared)</source>
         <translation>차이 없음(설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="190"/>
+        <location filename="../cli/CompareCommand.cpp" line="192"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
@@ -2847,137 +2935,137 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>B쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="55"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="63"/>
         <source>Filter by setting or parameter name</source>
         <translation>설정 이름 또는 파라미터 이름으로 필터</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="65"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>선택한 양쪽을 읽어 비교합니다(드라이버는 새로 읽음)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="67"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="75"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="100"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="108"/>
         <source>%1 refused: %2</source>
         <translation>%1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="114"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="122"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
         <source>side A</source>
         <translation>A쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
         <source>side B</source>
         <translation>B쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="143"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="151"/>
         <source>Factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="158"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1에 사용할 백업 파일과 그 안의 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="164"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1에 사용할 버스의 식별된 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="180"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="197"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="205"/>
         <source>Unknown family %1</source>
         <translation>알 수 없는 제품군 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="217"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="225"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="218"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
         <source>factory defaults (%1)</source>
         <translation>공장 출하값 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="236"/>
         <source>(no documented default)</source>
         <translation>(문서화된 기본값 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="231"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="237"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="247"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="255"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>차이 %n건</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="248"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="251"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
         <source>Note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="266"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>문서화된 공장 출하값 없음(차이로 세지 않음): %1</translation>
     </message>
@@ -2985,62 +3073,62 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareSide</name>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="22"/>
+        <location filename="../ui/files/CompareSide.cpp" line="23"/>
         <source>Browse…</source>
         <translation>찾아보기…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="25"/>
+        <location filename="../ui/files/CompareSide.cpp" line="27"/>
         <source>Drive on the bus</source>
         <translation>버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="26"/>
+        <location filename="../ui/files/CompareSide.cpp" line="28"/>
         <source>Drive in a backup file</source>
         <translation>백업 파일의 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="28"/>
+        <location filename="../ui/files/CompareSide.cpp" line="30"/>
         <source>Factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="32"/>
+        <location filename="../ui/files/CompareSide.cpp" line="34"/>
         <source>Drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="36"/>
+        <location filename="../ui/files/CompareSide.cpp" line="41"/>
         <source>Backup file</source>
         <translation>백업 파일</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="41"/>
+        <location filename="../ui/files/CompareSide.cpp" line="46"/>
         <source>Source:</source>
         <translation>원본:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="42"/>
+        <location filename="../ui/files/CompareSide.cpp" line="47"/>
         <source>Drive:</source>
         <translation>드라이버:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="43"/>
+        <location filename="../ui/files/CompareSide.cpp" line="48"/>
         <source>File:</source>
         <translation>파일:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="44"/>
+        <location filename="../ui/files/CompareSide.cpp" line="49"/>
         <source>Drive in file:</source>
         <translation>파일 안의 드라이버:</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="123"/>
+        <location filename="../ui/files/CompareSide.cpp" line="170"/>
         <source>Open backup file</source>
         <translation>백업 파일 열기</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="124"/>
+        <location filename="../ui/files/CompareSide.cpp" line="171"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
@@ -3650,237 +3738,237 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="42"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="43"/>
         <source>DC controller</source>
         <translation>DC 컨트롤러</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="45"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="46"/>
         <source>Re&amp;load stored configuration</source>
         <translation>저장된 설정 다시 불러오기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store &amp;configuration</source>
         <translation>설정 저장(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
         <source>Store P&amp;ID</source>
         <translation>PID 저장(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="70"/>
         <source>Store pre&amp;set</source>
         <translation>프리셋 저장(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="72"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="73"/>
         <source>Writes %1 = 1: %2</source>
         <translation>%1 = 1 쓰기: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="77"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="78"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>store.config = 0 쓰기: 컨트롤러가 저장된 설정을 다시 불러옵니다. 저장하지 않은 설정 변경은 버려집니다</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Speed mode and motor currents</source>
         <translation>속도 모드와 모터 전류</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Speed &amp;mode:</source>
         <translation>속도 모드(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Rated current:</source>
         <translation>정격 전류:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
         <source>Maximum start/load current:</source>
         <translation>최대 기동/부하 전류:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
         <source>Brake current:</source>
         <translation>브레이크 전류:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>Limit switches</source>
         <translation>리밋 스위치</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>Limits:</source>
         <translation>리밋:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 동작 레벨 (정회전):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 동작 레벨 (역회전):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>Protective stops (0 = off)</source>
         <translation>보호 정지 (0 = 사용 안 함)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
         <source>S&amp;tall stop time:</source>
         <translation>구속 정지 시간(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="98"/>
         <source>Communication loss stop time:</source>
         <translation>통신 두절 정지 시간:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Serial port (used from the next power-up)</source>
         <translation>시리얼 포트 (다음 전원 투입부터 적용)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="110"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="111"/>
         <source>Baud rate and parity are written as one 15-register block from 0x0080 that also stores the configuration; the controller uses them from the next power-up on: switch it off and on, then reconnect with them. The lock is lost at power-off until stored (Store configuration).</source>
         <translation>통신 속도와 패리티는 0x0080부터의 15개 레지스터 블록 하나로 쓰이며, 이 쓰기는 설정도 저장합니다. 컨트롤러는 다음 전원 투입부터 이 값을 사용합니다: 전원을 껐다 켠 뒤 새 설정으로 다시 연결하십시오. 시리얼 설정 잠금은 저장(설정 저장)하기 전까지 전원을 끄면 사라집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="132"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="133"/>
         <source>Takes effect now and is kept over power-off: each change is written as one 5-register block from 0x0050 that also stores the port states.</source>
         <translation>즉시 적용되며 전원을 꺼도 유지됩니다: 변경할 때마다 0x0050부터의 5개 레지스터 블록 하나로 쓰이며, 이 쓰기는 포트 상태도 저장합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="176"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="175"/>
         <source>The communication loss stop time is 0 s (%1): the manual does not say what 0 does, and OpenTOP assumes the stop is then off: if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
         <translation>통신 두절 정지 시간이 0 s입니다(%1): 매뉴얼은 0의 의미를 설명하지 않으며, OpenTOP은 이 경우 정지 기능이 꺼진다고 가정합니다: 모터 운전 중 연결이 끊기면 컨트롤러는 마지막 속도 명령으로 계속 운전합니다. 버스 통신이 끊기면 브레이크가 걸리도록 시간을 설정하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Baud rate:</source>
         <translation>통신 속도:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
         <source>Parity and stop bits:</source>
         <translation>패리티와 스톱 비트:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
         <source>Configuration over serial:</source>
         <translation>시리얼로 설정 변경:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>Speed loop PID</source>
         <translation>속도 루프 PID</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>&amp;P coefficient:</source>
         <translation>P 계수(&amp;P):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
         <source>I coefficient:</source>
         <translation>I 계수:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>&amp;D coefficient:</source>
         <translation>D 계수(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
         <source>D period:</source>
         <translation>D 주기:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>프리셋 속도 (포텐셔미터/아날로그 제어)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>프리셋 속도 모드(&amp;D):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
         <source>Trigger:</source>
         <translation>트리거:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>&amp;Forward speed:</source>
         <translation>정회전 속도(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
         <source>Reverse speed:</source>
         <translation>역회전 속도:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2를 디지털 포트로 사용</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI1 direction:</source>
         <translation>AI1 방향:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
         <source>AI2 direction:</source>
         <translation>AI2 방향:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>AI1 level:</source>
         <translation>AI1 레벨:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="131"/>
         <source>AI2 level:</source>
         <translation>AI2 레벨:</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="192"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="191"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>즉시 적용되며, 저장하기 전까지는 전원을 끄면 사라집니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="253"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
         <source>Set it anyway?</source>
         <translation>그래도 설정하시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="269"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="268"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>이 모드(%1)의 정회전·역회전 속도: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="271"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="270"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>속도의 단위와 범위는 프리셋 속도 모드에 따릅니다(아직 읽지 않음).</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="313"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="294"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;쓰기 완료, 저장 안 됨:&lt;/b&gt; %1. 이 값은 지금 적용되어 있지만 컨트롤러 전원을 끄면 사라집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="335"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="316"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3889,17 +3977,17 @@ Stored: %2.</source>
 저장 대상: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="346"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="327"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>아직 쓰지 않아 저장되지 않음: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="349"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1: 완료, 전원을 꺼도 유지됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="357"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="338"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3908,17 +3996,17 @@ Configuration changes written but not stored are discarded.</source>
 쓰기만 하고 저장하지 않은 설정 변경은 버려집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="363"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
         <source>Stored configuration reloaded.</source>
         <translation>저장된 설정을 다시 불러왔습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="371"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="352"/>
         <source>Writing %1 = %2…</source>
         <translation>%1 = %2 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="381"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="362"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 실패: %3</translation>
     </message>
@@ -4051,32 +4139,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceInfo</name>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="28"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="59"/>
         <source>not checked</source>
         <translation>확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="30"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="61"/>
         <source>online</source>
         <translation>온라인</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="32"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="63"/>
         <source>no answer</source>
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="34"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="65"/>
         <source>garbled replies (duplicate machine number?)</source>
         <translation>응답이 깨짐(국번 중복?)</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="37"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="68"/>
         <source>unknown device</source>
         <translation>알 수 없는 장치</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="39"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="70"/>
         <source>answered, identification failed</source>
         <translation>응답 있음, 식별 실패</translation>
     </message>
@@ -4084,27 +4172,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceMonitor</name>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="60"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="66"/>
         <source>Stopped</source>
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="62"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="68"/>
         <source>Running</source>
         <translation>운전 중</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="69"/>
         <source>Running CCW</source>
         <translation>CCW 운전 중</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="69"/>
         <source>Running CW</source>
         <translation>CW 운전 중</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="206"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="212"/>
         <source>machine number %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
@@ -4112,41 +4200,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="81"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="90"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="83"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="85"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1은(는) 설정이 아니라 명령입니다. 명령은 요청할 때 하나씩 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="239"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="250"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="262"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="248"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="259"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="271"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="273"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="282"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>쓰기 %n건 실패: %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="276"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="285"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>쓰기는 했지만, 받은 모든 드라이버에서 확인되지는 않았습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="279"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="288"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -4263,87 +4351,125 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveLineDialog</name>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="29"/>
         <source>Line format of machine number %1</source>
         <translation>국번 %1의 통신 형식</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="29"/>
         <source>Add drive</source>
         <translation>드라이브 추가</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="36"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="37"/>
         <source>&amp;Machine number:</source>
         <translation>국번(&amp;M):</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="44"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="51"/>
         <source>The port&apos;s (%1)</source>
         <translation>포트 형식 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="56"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="63"/>
         <source>The baud rate and format the drive is set to: requests to it switch the port to it and back between transactions. Type another as 38400 8E1.</source>
         <translation>드라이브에 설정된 통신 속도와 형식. 이 드라이브로 가는 요청은 트랜잭션 사이에 포트를 그 형식으로 전환했다가 되돌립니다. 다른 형식은 38400 8E1처럼 입력하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="59"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="66"/>
         <source>&amp;Line format:</source>
         <translation>통신 형식(&amp;L):</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="67"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="74"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="140"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="147"/>
         <source>Line &amp;format…</source>
         <translation>통신 형식(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="145"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="152"/>
         <source>Machine number %1 talks %2, not the port&apos;s %3</source>
         <translation>국번 %1은(는) 포트의 %3이(가) 아니라 %2(으)로 통신합니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="148"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="155"/>
         <source>Machine number %1 talks the port&apos;s %2</source>
         <translation>국번 %1은(는) 포트의 %2(으)로 통신합니다</translation>
     </message>
 </context>
 <context>
+    <name>opentop::DriveName</name>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="18"/>
+        <source>A machine&apos;s name has at most %1 characters; &quot;%2&quot; has %3.</source>
+        <translation>기계 이름은 최대 %1자입니다. &quot;%2&quot;은(는) %3자입니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="29"/>
+        <source>A machine&apos;s name may not hold control characters or line breaks (U+%1).</source>
+        <translation>기계 이름에는 제어 문자나 줄바꿈을 넣을 수 없습니다(U+%1).</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="37"/>
+        <source>A machine&apos;s name may not hold %1 (a percent sign directly before a digit).</source>
+        <translation>기계 이름에는 %1(퍼센트 기호 바로 뒤에 숫자)을 넣을 수 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="44"/>
+        <source>machine number %1</source>
+        <translation>국번 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="45"/>
+        <source>machine number %1 (%2)</source>
+        <translation>국번 %1(%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="50"/>
+        <source>Machine number %1</source>
+        <translation>국번 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="51"/>
+        <source>Machine number %1 (%2)</source>
+        <translation>국번 %1(%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="68"/>
+        <source>drive %1 (%2)</source>
+        <translation>드라이버 %1(%2)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="101"/>
+        <location filename="../ui/main/DrivePages.cpp" line="102"/>
         <source>Monitor</source>
         <translation>모니터</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="114"/>
+        <location filename="../ui/main/DrivePages.cpp" line="115"/>
         <source>Test run</source>
         <translation>시운전</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="121"/>
-        <source>drive %1 (%2)</source>
-        <translation>드라이버 %1 (%2)</translation>
+        <location filename="../ui/main/DrivePages.cpp" line="139"/>
+        <source>%1 — %2, firmware V%3, switches %4</source>
+        <translation>%1 — %2, 펌웨어 V%3, 스위치 %4</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="122"/>
+        <location filename="../ui/main/DrivePages.cpp" line="123"/>
         <source>Speed loop tuning</source>
         <translation>속도 루프 튜닝</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="128"/>
+        <location filename="../ui/main/DrivePages.cpp" line="129"/>
         <source>Alarms</source>
         <translation>알람</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/DrivePages.cpp" line="137"/>
-        <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
-        <translation>국번 %1 (%2, %3) — %4, 펌웨어 V%5</translation>
     </message>
 </context>
 <context>
@@ -4467,72 +4593,82 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveWorkspace</name>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="135"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="167"/>
         <source>Write &amp;all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="34"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="36"/>
         <source>Revert all</source>
         <translation>모두 되돌리기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="37"/>
         <source>Re-read all</source>
         <translation>모두 다시 읽기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="51"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="53"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>이 드라이버의 모든 페이지에서 쓰기 대기 중인 편집을 모두 쓰고 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="84"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="86"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>설정할 드라이버를 버스 목록에서 선택하십시오.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
+        <translation>
+            <numerusform>이제 모든 편집이 허용됩니다. 아직 아무것도 쓰지 않았습니다: 모든 쓰기 대기 쓰기가 값 %n개를 보냅니다.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="134"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="188"/>
         <source>Reading the drive…</source>
         <translation>드라이버를 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="158"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="170"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="145"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="208"/>
         <source>Nothing was written: %1</source>
         <translation>아무것도 쓰지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="183"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="142"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="222"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="231"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>쓰기 대기 값 %n개를 국번 %1에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="193"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="203"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="236"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
@@ -6056,12 +6192,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::ExitCheck</name>
     <message>
-        <location filename="../model/run/ExitCheck.cpp" line="19"/>
+        <location filename="../model/run/ExitCheck.cpp" line="20"/>
         <source>in communication priority (its own inputs cannot start or stop it)</source>
         <translation>통신 우선 상태(자체 입력 단자로 기동·정지할 수 없음)</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitCheck.cpp" line="20"/>
+        <location filename="../model/run/ExitCheck.cpp" line="21"/>
         <source>Machine number %1 (%2): %3</source>
         <translation>국번 %1 (%2): %3</translation>
     </message>
@@ -6627,77 +6763,77 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GroupFollowers</name>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="76"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="78"/>
         <source>could not be read</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="106"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="109"/>
         <source>its control priority could not be read</source>
         <translation>제어 우선순위를 읽을 수 없었습니다</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="108"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="111"/>
         <source>it is in %1: it takes run commands only from its input terminals and ignores them over the bus</source>
         <translation>%1 상태입니다: 운전 명령은 입력 단자에서만 받고 통신으로 온 명령은 무시합니다</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="112"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="115"/>
         <source>an alarm is active: it runs only once the alarm is cleared</source>
         <translation>알람이 발생해 있습니다: 알람이 해제되어야 운전합니다</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="126"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="129"/>
         <source>error code %1h</source>
         <translation>오류 코드 %1h</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="146"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="154"/>
         <source>Machine number %1 follows it.</source>
         <translation>국번 %1은(는) 따릅니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="147"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="155"/>
         <source>Machine number %1 follows it (%2).</source>
         <translation>국번 %1은(는) 따릅니다(%2).</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="149"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="158"/>
         <source>Machine number %1: not known whether it follows: %2.</source>
         <translation>국번 %1: 따를지 알 수 없습니다: %2.</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="153"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="160"/>
         <source>Machine number %1 does NOT follow it: %2. To run it with this drive, set its control priority to communication priority; otherwise it shows E2h &quot;Cannot execute command&quot;.</source>
         <translation>국번 %1은(는) 따르지 않습니다: %2. 이 드라이버와 함께 운전하려면 제어 우선순위를 통신 우선으로 설정하십시오. 그렇지 않으면 E2h &quot;명령 실행 불가&quot;를 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="168"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="174"/>
         <source>Machine number %1: its run state could not be read.</source>
         <translation>국번 %1: 운전 상태를 읽을 수 없었습니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="170"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="176"/>
         <source>Machine number %1 runs.</source>
         <translation>국번 %1 운전 중.</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="171"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
         <source>Machine number %1 runs (%2).</source>
         <translation>국번 %1 운전 중(%2).</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="173"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="179"/>
         <source>Machine number %1 does not run: %2.</source>
         <translation>국번 %1은(는) 운전하지 않습니다: %2.</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="175"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="181"/>
         <source>Machine number %1 does not run.</source>
         <translation>국번 %1은(는) 운전하지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="183"/>
         <source>It shows %1</source>
         <translation>표시: %1</translation>
     </message>
@@ -7401,112 +7537,112 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>연결 해제(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="55"/>
+        <location filename="../ui/main/MainMenus.cpp" line="57"/>
         <source>Communication &amp;groups…</source>
         <translation>통신 그룹(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="62"/>
         <source>&amp;Export alarm histories…</source>
         <translation>알람 이력 내보내기(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="61"/>
+        <location filename="../ui/main/MainMenus.cpp" line="64"/>
         <source>&amp;Quit</source>
         <translation>종료(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="64"/>
+        <location filename="../ui/main/MainMenus.cpp" line="67"/>
         <source>&amp;Files</source>
         <translation>파일(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="69"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Drive</source>
         <translation>드라이버(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="72"/>
+        <location filename="../ui/main/MainMenus.cpp" line="75"/>
         <source>&amp;Write all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="74"/>
+        <location filename="../ui/main/MainMenus.cpp" line="77"/>
         <source>&amp;Re-read all</source>
         <translation>모두 다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="76"/>
+        <location filename="../ui/main/MainMenus.cpp" line="79"/>
         <source>Write a setting to the selected drives…</source>
         <translation>선택한 드라이버에 설정 하나 쓰기…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="82"/>
+        <location filename="../ui/main/MainMenus.cpp" line="85"/>
         <source>&amp;Next page</source>
         <translation>다음 페이지(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="88"/>
+        <location filename="../ui/main/MainMenus.cpp" line="91"/>
         <source>&amp;Previous page</source>
         <translation>이전 페이지(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="104"/>
+        <location filename="../ui/main/MainMenus.cpp" line="107"/>
         <source>&amp;View</source>
         <translation>보기(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="113"/>
         <source>&amp;Traffic log</source>
         <translation>통신 로그(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="111"/>
+        <location filename="../ui/main/MainMenus.cpp" line="114"/>
         <source>Bus &amp;overview</source>
         <translation>버스 개요(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="113"/>
+        <location filename="../ui/main/MainMenus.cpp" line="116"/>
         <source>T&amp;rends</source>
         <translation>트렌드(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="114"/>
+        <location filename="../ui/main/MainMenus.cpp" line="117"/>
         <source>Communication &amp;groups</source>
         <translation>통신 그룹(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="128"/>
+        <location filename="../ui/main/MainMenus.cpp" line="130"/>
         <source>Language</source>
         <translation>언어</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="129"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP은 다음에 시작할 때 %1(으)로 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="135"/>
+        <location filename="../ui/main/MainMenus.cpp" line="137"/>
         <source>&amp;End of line</source>
         <translation>출하 검사(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="137"/>
+        <location filename="../ui/main/MainMenus.cpp" line="139"/>
         <source>&amp;Help</source>
         <translation>도움말(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="153"/>
+        <location filename="../ui/main/MainMenus.cpp" line="155"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="163"/>
+        <location filename="../ui/main/MainMenus.cpp" line="165"/>
         <source>Export alarm histories</source>
         <translation>알람 이력 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="164"/>
+        <location filename="../ui/main/MainMenus.cpp" line="166"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
@@ -7763,37 +7899,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="177"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="191"/>
         <source>Live values</source>
         <translation>실시간 값</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="185"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="199"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="201"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="215"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="266"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="280"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>드라이버 표시부에 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="275"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="289"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>알람 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="278"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="292"/>
         <source>Alarm active (reading which one…)</source>
         <translation>알람 발생 중 (어떤 알람인지 읽는 중…)</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="333"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="347"/>
         <source>No live state: %1</source>
         <translation>실시간 상태 없음: %1</translation>
     </message>
@@ -7874,12 +8010,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="32"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="33"/>
         <source>Switch to communication priority…</source>
         <translation>통신 우선으로 전환…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="57"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="58"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -7888,53 +8024,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 &quot;%4&quot;(으)로 전환하면 이 명령들을 버스가 맡게 됩니다: 입력 단자로는 더 이상 모터를 기동·정지할 수 없고, &quot;%2&quot;(으)로 되돌릴 때까지 설비 자체의 조작은 효과가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="83"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
         <source>Switch to communication priority</source>
         <translation>통신 우선으로 전환</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>국번 %1이(가) 운전, 정지, 방향, 속도 선택을 버스로 받게 됩니다(%2 = &quot;%3&quot;). 그러면 입력 단자로는 더 이상 모터를 기동·정지할 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="90"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="91"/>
         <source>Switch</source>
         <translation>전환</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="99"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="100"/>
         <source>Switching to communication priority…</source>
         <translation>통신 우선으로 전환하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="107"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="108"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>국번 %1이(가) 이제 버스로 운전 명령을 받습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="110"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>제어 우선순위를 전환할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="118"/>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="124"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="120"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="126"/>
         <source>Return to I/O priority</source>
         <translation>I/O 우선으로 복귀</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="119"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>국번 %1이(가) 다시 입력 단자로 운전, 정지, 방향, 속도 선택을 받고, 버스를 통한 운전 명령은 거부합니다. 입력이 운전 상태이면 모터가 운전합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="129"/>
         <source>Returning to I/O priority…</source>
         <translation>I/O 우선으로 복귀하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="136"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="138"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>국번 %1이(가) 다시 입력 단자를 따릅니다.</translation>
     </message>
@@ -7976,32 +8112,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="38"/>
         <source>&amp;Write to all</source>
         <translation>모두에 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="40"/>
         <source>Write one setting to several drives</source>
         <translation>설정 하나를 여러 드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Current value</source>
         <translation>현재 값</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
@@ -8051,111 +8187,169 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="224"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="226"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>드라이버마다 단위가 다릅니다(%1). 하나씩 쓰십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="232"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="234"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>드라이버 %1에서 허용되지 않음(%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="239"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="241"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>드라이버 %1의 통신 그룹에서 허용되지 않습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
         <source>None of the selected drives is identified.</source>
         <translation>선택한 드라이버 중 식별된 것이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="259"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="304"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="261"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="262"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
         <source>Allowed on %1</source>
         <translation>%1에서 허용</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="270"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="272"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="271"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="273"/>
         <source>Allowed on %1.</source>
         <translation>%1에서 허용.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>그래도 드라이버 %n대에 설정하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="322"/>
         <source>&amp;Set it</source>
         <translation>설정(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1을(를) 국번 %2에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="347"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="343"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="352"/>
         <source>waiting…</source>
         <translation>대기 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1을(를) 드라이버 %n대에 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>드라이버 %n대 중 %1대에 쓰기 및 검증 완료.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="375"/>
         <source>writing…</source>
         <translation>쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="383"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
         <source>Written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="385"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
         <source>Written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="386"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>쓰기 완료, 검증 안 됨(다시 읽을 수 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="387"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="396"/>
         <source>Failed: %1</source>
         <translation>실패: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::NameCommand</name>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="38"/>
+        <source>Name a machine (&quot;Infeed conveyor 3&quot;) or show the names of the bus</source>
+        <translation>기계에 이름 지정(&quot;Infeed conveyor 3&quot;) 또는 버스의 이름 표시</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="44"/>
+        <source>error: name takes a machine number and one name; put a name with spaces in quotes: name 1 &quot;Infeed conveyor 3&quot;</source>
+        <translation>오류: name에는 국번 하나와 이름 하나를 줍니다. 공백이 있는 이름은 따옴표로 묶으십시오: name 1 &quot;Infeed conveyor 3&quot;</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="52"/>
+        <source>error: %1</source>
+        <translation>오류: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="62"/>
+        <source>No machine of this bus has a name yet; give one with: name ID &quot;TEXT&quot;</source>
+        <translation>이 버스의 기계에는 아직 이름이 없습니다. 다음으로 지정하십시오: name ID &quot;TEXT&quot;</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <source>name</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="77"/>
+        <source>error: &quot;%1&quot; is not a machine number 1–247</source>
+        <translation>오류: &quot;%1&quot;은(는) 1–247의 국번이 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="87"/>
+        <source>Machine number %1 has no name.</source>
+        <translation>국번 %1에는 이름이 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="93"/>
+        <source>error: %1 Nothing was changed.</source>
+        <translation>오류: %1 아무것도 바꾸지 않았습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="106"/>
+        <source>Machine number %1 has no name now.</source>
+        <translation>국번 %1은(는) 이제 이름이 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="107"/>
+        <source>%1 is named now; messages, files and scans show it.</source>
+        <translation>%1에 이름을 붙였습니다. 메시지, 파일, 스캔에 표시됩니다.</translation>
     </message>
 </context>
 <context>
@@ -8184,87 +8378,87 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirror</name>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="19"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="20"/>
         <source>speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="21"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="22"/>
         <source>machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="23"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="24"/>
         <source>running data No.</source>
         <translation>운전 데이터 번호</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="25"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="26"/>
         <source>countdown</source>
         <translation>카운트다운</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="27"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="28"/>
         <source>load rate</source>
         <translation>부하율</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="46"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
         <source>Alarm %1 %2</source>
         <translation>알람 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="48"/>
         <source>Alarm (code not read yet)</source>
         <translation>알람 (코드 아직 읽지 않음)</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="58"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="59"/>
         <source>Current speed %1 %2</source>
         <translation>현재 속도 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="62"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="63"/>
         <source>Current speed: no finite value in %1</source>
         <translation>현재 속도: %1에 유한한 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="70"/>
         <source>Current speed %1 r/min</source>
         <translation>현재 속도 %1 r/min</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="70"/>
         <source>Speed not read</source>
         <translation>속도 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="75"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="76"/>
         <source>Machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="83"/>
         <source>Running data SPno%1</source>
         <translation>운전 데이터 SPno%1</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="89"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
         <source>Running data not read</source>
         <translation>운전 데이터 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="99"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="96"/>
         <source>Countdown set to %1 d %2 h %3 min %4 s (the drive does not report the time left)</source>
         <translation>카운트다운 설정 %1일 %2시간 %3분 %4초 (드라이버는 남은 시간을 알려주지 않음)</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="110"/>
         <source>Load rate %1 %</source>
         <translation>부하율 %1 %</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="116"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
         <source>Load rate not read</source>
         <translation>부하율 읽지 않음</translation>
     </message>
@@ -8305,27 +8499,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="199"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="217"/>
         <source>%1 (not valid now)</source>
         <translation>%1 (현재 무효)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="246"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="237"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="255"/>
         <source>Allowed: %1</source>
         <translation>허용: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="240"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="258"/>
         <source>On the drive: %1</source>
         <translation>드라이버 값: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="274"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="289"/>
         <source>Not accepted: %1</source>
         <translation>받아들일 수 없음: %1</translation>
     </message>
@@ -8333,112 +8527,112 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="38"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="39"/>
         <source>Parameter initialisation</source>
         <translation>파라미터 초기화</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="48"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="49"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>드라이버 %1의 모든 설정을 통신 설정까지 포함하여 공장 출하값으로 되돌립니다: 그 후 드라이버는 기본 통신 속도로만 응답할 수 있고, 제어 우선순위는 입력 단자로 돌아갑니다. 모터는 정지해 있어야 합니다. 무엇이든 보내기 전에 이 드라이버에 미치는 영향을 먼저 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="56"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="57"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>드라이버 %1의 모든 파라미터 초기화(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="59"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>드라이버와 변경 내용을 표시하고 먼저 확인합니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="86"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="87"/>
         <source>Reading what the initialisation would change…</source>
         <translation>초기화로 변경될 내용을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="110"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="111"/>
         <source>Afterwards:</source>
         <translation>이후:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="115"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="116"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>이 드라이버에서 쓰지 않은 편집 %n개는 버려집니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="119"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>보냄: %1, 국번 %2에만.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>보냄: %1, 국번 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="127"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
         <source>Initialise drive %1</source>
         <translation>드라이버 %1 초기화</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="125"/>
-        <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
-        <translation>드라이버 %1(%2)의 모든 설정을 공장 출하값으로 되돌리시겠습니까?</translation>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <source>Reset every setting of %1 to its factory defaults?</source>
+        <translation>%1의 모든 설정을 공장 기본값으로 되돌리시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="142"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>취소됨. 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="147"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="150"/>
         <source>Initialising drive %1…</source>
         <translation>드라이버 %1 초기화 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="156"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="159"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>드라이버 %1이(가) 초기화를 확인하지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="157"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
         <source>Nothing was sent: %1</source>
         <translation>아무것도 보내지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="173"/>
         <source>&amp;Reconnect at %1 bit/s after the power-up</source>
         <translation>전원 투입 후 %1 bit/s로 다시 연결(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="177"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>드라이버 %1 초기화 완료. 값을 다시 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="180"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="183"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>드라이버 %1 초기화 완료. 값 %n개를 다시 읽을 수 없습니다(이제 기본 통신 설정으로만 응답할 수 있음).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="187"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>드라이버 %1을(를) 공장 출하값으로 초기화하고 값을 다시 읽었습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="210"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="213"/>
         <source>Reconnecting at %1 bit/s in %2 s…</source>
         <translation>%2 s 후 %1 bit/s로 다시 연결합니다…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="223"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="226"/>
         <source>Reconnect at %1 bit/s from the Bus menu.</source>
         <translation>버스 메뉴에서 %1 bit/s로 다시 연결하십시오.</translation>
     </message>
@@ -8529,75 +8723,83 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="106"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="149"/>
         <source>&amp;Write page</source>
         <translation>페이지 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="27"/>
         <source>Re&amp;vert</source>
         <translation>되돌리기(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="28"/>
         <source>Re-&amp;read</source>
         <translation>다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>이 페이지의 쓰기 대기 편집을 드라이버에 쓰고 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="49"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>이 페이지의 쓰기 대기 편집을 버립니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="50"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>이 페이지의 값을 드라이버에서 다시 읽습니다(편집 내용은 유지)</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/ParameterPage.cpp" line="137"/>
+        <source>Every field is accepted now. Nothing has been written yet: Write page sends %n value(s).</source>
+        <translation>
+            <numerusform>이제 모든 필드가 허용됩니다. 아직 아무것도 쓰지 않았습니다: 페이지 쓰기가 값 %n개를 보냅니다.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="107"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="150"/>
         <source>&amp;Write page (%1)</source>
         <translation>페이지 쓰기(&amp;W) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="163"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="124"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="167"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="116"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>아무것도 쓰지 않았습니다: 받아들일 수 없는 항목 %n개. %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="166"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="208"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>페이지 %1의 값 %n개를 국번 %2에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="161"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="182"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="203"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="212"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="175"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="217"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
@@ -9315,29 +9517,34 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="427"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="431"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="442"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot;가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="453"/>
         <source>must be an object</source>
         <translation>객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>name repeated</source>
         <translation>이름이 중복됩니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="464"/>
+        <source>texts: {setting:…} names no parameter (%1)</source>
+        <translation>texts: {setting:…}이(가) 가리키는 파라미터가 없습니다(%1)</translation>
     </message>
     <message>
         <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
@@ -9348,74 +9555,79 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="78"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="79"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1이(가) 프로파일 번역의 최대 크기인 %2 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="96"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="97"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>프로파일 번역의 최대 크기인 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="101"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="102"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="105"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="106"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="109"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot;은(는) &quot;%1&quot;이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="112"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot;은(는) %1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="117"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="118"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot;가 &quot;%1&quot;이지만 프로파일은 &quot;%2&quot;입니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="119"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot;가 &quot;%1&quot;이지만 &quot;%2&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="123"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot;는 키 → 텍스트 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="126"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="127"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot;은(는) 비어 있지 않은 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="143"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="144"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>프로파일의 키 %1개가 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="147"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="148"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>프로파일에 없는 키 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="155"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="156"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 패널 코드는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="160"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="161"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 자리 표시자는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="168"/>
+        <source>texts &quot;%1&quot;: the settings named ({setting:…}) must stay as in the English (%2), found (%3)</source>
+        <translation>texts &quot;%1&quot;: 가리키는 설정({setting:…})은 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
 </context>
 <context>
@@ -10935,42 +11147,42 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreChoice</name>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Drive in file / setting</source>
         <translation>파일의 드라이버 / 설정</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Value in file</source>
         <translation>파일의 값</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Restore to</source>
         <translation>복원 대상</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="54"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="55"/>
         <source>(do not restore)</source>
         <translation>(복원 안 함)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="58"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="59"/>
         <source>Drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="117"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="121"/>
         <source>Two drives of the file would be restored to drive %1.</source>
         <translation>파일의 드라이버 두 대가 드라이버 %1에 복원됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="122"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="126"/>
         <source>Drive %1 is not on the bus (or not identified).</source>
         <translation>드라이버 %1이(가) 버스에 없습니다(또는 식별되지 않음).</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="134"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="138"/>
         <source>Nothing chosen: tick at least one setting of a drive with a target.</source>
         <translation>선택한 항목 없음: 대상이 있는 드라이버의 설정을 하나 이상 체크하십시오.</translation>
     </message>
@@ -11102,201 +11314,206 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Preview</source>
         <translation>미리 보기(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Write to drives…</source>
         <translation>드라이버에 쓰기(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Cancel</source>
         <translation>취소(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>&amp;Save report…</source>
         <translation>보고서 저장(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
         <source>Restore from a backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
         <source>No file chosen</source>
         <translation>선택한 파일 없음</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>&amp;Choose file…</source>
         <translation>파일 선택(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="47"/>
         <source>File:</source>
         <translation>파일:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>드라이버를 읽고 바뀔 내용을 표시합니다. 아무것도 쓰지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>미리 본 변경 사항을 쓰고, 각각 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>보고서를 텍스트로 저장합니다. 이름이 .csv로 끝나면 CSV로 저장합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="98"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="99"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="103"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="188"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="105"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="170"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>거부됨, 아무것도 쓰지 않습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="109"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="110"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>파일에 드라이버 %n대가 있습니다. 복원할 항목을 선택한 뒤 미리 보기를 누르십시오.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="137"/>
         <source>Refused, nothing written:</source>
         <translation>거부됨, 아무것도 쓰지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="152"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="139"/>
         <source>Drive %1 from %2: %3</source>
         <translation>드라이버 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="187"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="169"/>
         <source>Choose a backup file first.</source>
         <translation>먼저 백업 파일을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <source>Nothing was read or written: %1.</source>
+        <translation>아무것도 읽거나 쓰지 않았습니다: %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestoreDialog.cpp" line="220"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
         <source>Reading drive %1…</source>
         <translation>드라이버 %1 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
         <source>Writing drive %1…</source>
         <translation>드라이버 %1 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="241"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>드라이버 %1: %2 (%m 중 %v)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="269"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="260"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="284"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="275"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="361"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="287"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="278"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>쓸 설정 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="294"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="297"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="288"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>아직 아무것도 쓰지 않았습니다. 적용하려면 드라이버에 쓰기를 누르십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="298"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="289"/>
         <source>Nothing written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>Restore from backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="357"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="383"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="364"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>설정 %n개를 드라이버 %1에 쓰고 각각 다시 읽어 검증하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
         <source>Write to drives</source>
         <translation>드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
         <source>&amp;Write</source>
         <translation>쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="393"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="374"/>
         <source>Save restore report</source>
         <translation>복원 보고서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="394"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>텍스트 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="399"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -11323,13 +11540,8 @@ No unit can be tested until results can be recorded.</source>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 값을 정확하게 쓸 수 없습니다</translation>
     </message>
-    <message>
-        <location filename="../model/files/RestorePlan.cpp" line="166"/>
-        <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
-        <translation>저장 명령은 항상 씁니다: 드라이버가 저장한 값은 다시 읽을 수 없고, 현재 사용 중인 값만 읽을 수 있습니다</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="177"/>
+        <location filename="../model/files/RestorePlan.cpp" line="173"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>파일의 값 %n개는 이 드라이버에 쓸 수 없습니다. 아무것도 쓰지 않았습니다</numerusform>
@@ -11337,81 +11549,96 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <source>%1 sent after the writes, so that the settings written survive power-off</source>
+        <translation>쓰기 후 %1을(를) 보내 쓴 설정이 전원을 꺼도 유지되게 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="258"/>
+        <source>%1 sent: settings written to this drive earlier (by an interrupted restore, a page or the command line) are not stored yet</source>
+        <translation>%1 전송: 이전에 이 드라이버에 쓴 설정(중단된 복원, 페이지 또는 명령줄)이 아직 저장되지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="262"/>
+        <source>%1 not sent: nothing it stores is written. What a drive has stored cannot be read back: if it loses settings at power-off, switch it off and on and restore again</source>
+        <translation>%1 미전송: 이 명령이 저장하는 설정은 쓰지 않았습니다. 드라이버에 저장된 내용은 다시 읽을 수 없습니다. 전원을 끄면 설정이 없어진다면 전원을 껐다 켠 뒤 다시 복원하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="296"/>
         <source>keep</source>
         <translation>유지</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="298"/>
         <source>write</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="300"/>
         <source>store</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="270"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>unchanged</source>
         <translation>변경 없음</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="273"/>
+        <location filename="../model/files/RestorePlan.cpp" line="314"/>
         <source>written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="276"/>
+        <location filename="../model/files/RestorePlan.cpp" line="317"/>
         <source>failed: %1</source>
         <translation>실패: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="278"/>
+        <location filename="../model/files/RestorePlan.cpp" line="319"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="280"/>
+        <location filename="../model/files/RestorePlan.cpp" line="321"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하여 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="305"/>
+        <location filename="../model/files/RestorePlan.cpp" line="346"/>
         <source>planned</source>
         <translation>계획됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="307"/>
+        <location filename="../model/files/RestorePlan.cpp" line="348"/>
         <source>restored</source>
         <translation>복원됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="309"/>
+        <location filename="../model/files/RestorePlan.cpp" line="350"/>
         <source>refused</source>
         <translation>거부됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="352"/>
         <source>communication failure</source>
         <translation>통신 실패</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="313"/>
+        <location filename="../model/files/RestorePlan.cpp" line="354"/>
         <source>verification mismatch</source>
         <translation>검증 불일치</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="356"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
@@ -11419,95 +11646,105 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlanTable</name>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Action</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>File value</source>
         <translation>파일 값</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="15"/>
         <source>Drive value before</source>
         <translation>이전 드라이버 값</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="15"/>
         <source>Result</source>
         <translation>결과</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="93"/>
+        <source>&amp;Differences only</source>
+        <translation>차이만(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="95"/>
+        <source>Show only the settings that would be written (or were), and what went wrong</source>
+        <translation>쓸(또는 쓴) 설정과 실패한 항목만 표시</translation>
     </message>
 </context>
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="16"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="17"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>쓰기 및 검증 %1, 변경 없음 %2, 실패 %3, 시도 안 함 %4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="22"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="23"/>
         <source>, %1 not confirmed</source>
         <translation>, 확인 안 됨 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="25"/>
         <source>; %1 of %2 store commands written</source>
         <translation>; 저장 명령 %2개 중 %1개 씀</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 복원 보고서</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>File: %1</source>
         <translation>파일: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>Date: %1 (UTC)</source>
         <translation>날짜: %1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
         <source>Written to the drives</source>
         <translation>드라이버에 씀</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
         <source>Preview only: nothing written</source>
         <translation>미리 보기만: 아무것도 쓰지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="40"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="41"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>국번 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="51"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="52"/>
         <source>  %1: %2</source>
         <translation>  %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="54"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1: 파일 %2, 드라이버 %3: %4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="59"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="60"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
@@ -11515,44 +11752,44 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="49"/>
+        <location filename="../model/files/Restorer.cpp" line="51"/>
         <source>interrupted before anything was written</source>
         <translation>아무것도 쓰기 전에 중단됨</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="64"/>
+        <location filename="../model/files/Restorer.cpp" line="66"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>드라이버 읽기 실패, 아무것도 쓰지 않음(%1)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/Restorer.cpp" line="116"/>
+        <location filename="../model/files/Restorer.cpp" line="119"/>
         <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
         <translation>
             <numerusform>파일의 값 %n개는 통신 그룹의 드라이버에 쓸 수 없습니다. 아무것도 쓰지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="144"/>
+        <location filename="../model/files/Restorer.cpp" line="147"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>쓰기 %2건 중 %1건 후 중단됨. 완료하려면 복원을 다시 실행하십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="180"/>
+        <location filename="../model/files/Restorer.cpp" line="183"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 확인 안 됨(%2): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하십시오. 먼저 드라이버를 다시 읽습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="214"/>
+        <location filename="../model/files/Restorer.cpp" line="217"/>
         <source>after storing, the drive holds %1</source>
         <translation>저장 후 드라이버 값은 %1입니다</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="219"/>
+        <location filename="../model/files/Restorer.cpp" line="222"/>
         <source>the settings could not be read back after storing</source>
         <translation>저장 후 설정을 다시 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="252"/>
+        <location filename="../model/files/Restorer.cpp" line="255"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>통신 설정이 변경되었습니다(%1): 다음에 드라이버 전원을 켤 때 적용됩니다. 그 후에는 새 설정으로 연결하십시오</translation>
     </message>
@@ -12045,68 +12282,79 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunLiveState</name>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="24"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="26"/>
         <source>The drive now</source>
         <translation>현재 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="47"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="51"/>
         <source>Alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="86"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="58"/>
+        <source>Running data</source>
+        <translation>운전 데이터</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/RunLiveState.cpp" line="95"/>
         <source>%1:</source>
         <translation>%1:</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="124"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
         <source>%1 (%2 %3)</source>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="126"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
         <source>not reported</source>
         <translation>알려주지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="129"/>
-        <location filename="../ui/run/RunLiveState.cpp" line="139"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="143"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="146"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="156"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="131"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="143"/>
+        <source>SPno%1</source>
+        <translation>SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/RunLiveState.cpp" line="148"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="134"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="151"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="136"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="153"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="172"/>
         <source>waiting for the first answer…</source>
         <translation>첫 응답 대기 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="172"/>
         <source>not watched</source>
         <translation>감시 안 함</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="161"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="178"/>
         <source>Not live: %1</source>
         <translation>실시간 아님: %1</translation>
     </message>
@@ -12114,12 +12362,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="56"/>
+        <location filename="../model/run/RunningData.cpp" line="76"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1은(는) %2 r/min에서 %3 s 동안 감속합니다: 매뉴얼은 고속(약 %5 r/min 이상)에서 감속할 때 감속 시간을 %4 s 이상으로 하도록 요구합니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="124"/>
+        <location filename="../model/run/RunningData.cpp" line="144"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1의 고속 감속 시간이 짧습니다(%2 r/min에서 %3 s): 매뉴얼은 고속(약 %5 r/min 이상)에서 감속할 때 감속 시간을 %4 s 이상으로 하도록 요구합니다.</translation>
     </message>
@@ -12127,153 +12375,154 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningDataPage</name>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="39"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="40"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Running data</source>
         <translation>운전 데이터</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Speed (r/min)</source>
         <translation>속도 (r/min)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Acceleration (s)</source>
         <translation>가속 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="56"/>
         <source>Deceleration (s)</source>
         <translation>감속 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="56"/>
         <source>Direction</source>
         <translation>방향</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="68"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="69"/>
         <source>SPno%1</source>
         <translation>SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="71"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="72"/>
         <source>Selected by the inputs M0 = %1, M1 = %2, M2 = %3 or by the running data selection command</source>
         <translation>입력 M0 = %1, M1 = %2, M2 = %3 또는 운전 데이터 선택 명령으로 선택</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="89"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="95"/>
         <source>SS trimmer</source>
         <translation>SS 트리머</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="90"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="96"/>
         <source>SPno1 has no acceleration register: the SS trimmer on the drive sets it (0.5–30 s); it is not stored in the drive</source>
         <translation>SPno1에는 가속 레지스터가 없습니다: 드라이버의 SS 트리머로 설정합니다(0.5–30 s). 드라이버에 저장되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="93"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
         <source>SD trimmer</source>
         <translation>SD 트리머</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="94"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="100"/>
         <source>SPno1 has no deceleration register: the SD trimmer on the drive sets it (0.5 s or 2–30 s); it is not stored in the drive</source>
         <translation>SPno1에는 감속 레지스터가 없습니다: 드라이버의 SD 트리머로 설정합니다(0.5 s 또는 2–30 s). 드라이버에 저장되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="98"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="104"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="105"/>
         <source>This drive has no register for this value</source>
         <translation>이 드라이버에는 이 값의 레지스터가 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="106"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="112"/>
         <source>Initialize</source>
         <translation>초기화</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="108"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="114"/>
         <source>Reset SPno%1 on the drive to its factory defaults</source>
         <translation>드라이버의 SPno%1을(를) 공장 출하값으로 되돌립니다</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="109"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="274"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="280"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="115"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="315"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="321"/>
         <source>Initialize SPno%1</source>
         <translation>SPno%1 초기화</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="130"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="145"/>
         <source>SPno1 runs at the speed of the external speed-setting VR (CN3) with the SS/SD trimmer times; it is not stored in the drive</source>
         <translation>SPno1은 외부 속도 설정 VR(CN3)의 속도와 SS/SD 트리머 시간으로 운전합니다. 드라이버에 저장되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="214"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="255"/>
         <source>Allowed speed on this %1: %2 (0 stops the motor)</source>
         <translation>이 %1에서 허용되는 속도: %2 (0이면 모터 정지)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="224"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="168"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="265"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="227"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="268"/>
         <source>Allowed speed: %1</source>
         <translation>허용 속도: %1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="228"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
         <source>The drive&apos;s variant is not known, so a speed must suit every variant (0 stops the motor): %1</source>
         <translation>드라이버의 기종을 알 수 없으므로 속도는 모든 기종에 맞아야 합니다(0이면 모터 정지): %1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="281"/>
         <source>its factory default</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="262"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="303"/>
         <source>The SPno1 speed and times come from the external VR and the SS/SD trimmers; they do not change.</source>
         <translation>SPno1의 속도와 시간은 외부 VR과 SS/SD 트리머로 정해지므로 바뀌지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="310"/>
         <source>Your unwritten edits in this row are discarded.</source>
         <translation>이 행에서 쓰지 않은 편집은 버려집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="275"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="316"/>
         <source>Reset running data SPno%1 of drive %2 to these factory defaults?</source>
         <translation>드라이버 %2의 운전 데이터 SPno%1을(를) 이 공장 출하값으로 되돌리시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="286"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="327"/>
         <source>Initializing SPno%1…</source>
         <translation>SPno%1 초기화 중…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="301"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="342"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1을(를) 초기화하지 못했습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="358"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 초기화 완료. 값 %n개를 다시 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="319"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="360"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1을(를) 공장 출하값으로 초기화했습니다</translation>
     </message>
@@ -12281,93 +12530,93 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="64"/>
+        <location filename="../cli/ScanCommand.cpp" line="65"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>버스의 드라이버를 찾아 식별합니다(국번 1–247)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="70"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>조회할 첫 국번, 1–247 (기본값 1).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="70"/>
         <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>조회할 마지막 국번, 1–247 (기본값 247).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="73"/>
+        <location filename="../cli/ScanCommand.cpp" line="74"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>국번당 대기 시간(ms), 10–5000 (기본값: 통신 속도에서 산출; 느린 어댑터나 게이트웨이는 늘리십시오).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="75"/>
+        <location filename="../cli/ScanCommand.cpp" line="76"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="77"/>
+        <location filename="../cli/ScanCommand.cpp" line="78"/>
         <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
         <translation>찾지 못한 국번을 드라이브가 설정될 수 있는 다른 모든 통신 형식으로도 묻습니다(8N1의 DBU 버스에 있는 8E1의 DC 컨트롤러). 형식마다 스캔이 한 번 더 필요하며 기본은 꺼져 있습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="92"/>
+        <location filename="../cli/ScanCommand.cpp" line="93"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>오류: --%1은(는) %2–%3의 숫자여야 합니다. &quot;%4&quot;은(는) 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="104"/>
+        <location filename="../cli/ScanCommand.cpp" line="105"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>오류: scan은 인수를 받지 않습니다. --from N --to N을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="113"/>
+        <location filename="../cli/ScanCommand.cpp" line="114"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>오류: --from %1이(가) --to %2보다 뒤입니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="131"/>
+        <location filename="../cli/ScanCommand.cpp" line="132"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="178"/>
+        <location filename="../cli/ScanCommand.cpp" line="179"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>국번을 하나도 스캔하기 전에 중단되었습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="180"/>
+        <location filename="../cli/ScanCommand.cpp" line="181"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>중단됨: 국번 %1–%2을(를) 스캔했습니다(%4개 중 %3개). %5–%6은(는) 조회하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="194"/>
+        <location filename="../cli/ScanCommand.cpp" line="195"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>오류: 국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="206"/>
+        <location filename="../cli/ScanCommand.cpp" line="207"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="208"/>
+        <location filename="../cli/ScanCommand.cpp" line="209"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>참고: 드라이버 %1대가 %2 ms 대기 후에야 응답하여 다시 조회했습니다. 스캔에서 드라이버가 누락되면 --wait를 늘리십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="217"/>
+        <location filename="../cli/ScanCommand.cpp" line="218"/>
         <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
         <translation>경고: 국번 %1이(가) 응답했지만 %2번 더 물어도 식별에 실패했습니다. 드라이버로 세지 않습니다. 직접 추가하십시오: 명령에 이 국번을 지정하면 --timeout 안에 다시 식별합니다(응답이 느린 장치는 늘리십시오). 또는 통신 설정을 확인한 뒤 더 긴 --wait로 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="226"/>
+        <location filename="../cli/ScanCommand.cpp" line="227"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -12378,109 +12627,117 @@ This moves or stops a motor: add --yes to send it.</source>
   - 종단 저항 (버스 양 끝에 120 Ω)과 드라이버 전원.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="239"/>
+        <location filename="../cli/ScanCommand.cpp" line="240"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>힌트: %1 같은 연결에 다음을 추가하여 다시 시도하십시오: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="252"/>
+        <location filename="../cli/ScanCommand.cpp" line="253"/>
         <source>Serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="255"/>
+        <location filename="../cli/ScanCommand.cpp" line="256"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>경고: %1 이 때문에 스캔 시 국번마다 최대 %2 ms를 더 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="284"/>
-        <source>%1 — variant unknown</source>
-        <translation>%1 — 기종 알 수 없음</translation>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <source>warning: machine number %1 (%2) answers with garbled replies: two drives probably have the same machine number. Check the address switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
+        <translation>경고: 국번 %1(%2)의 응답이 손상되었습니다. 두 드라이버가 같은 국번일 가능성이 큽니다. 이 버스 드라이버들의 주소 스위치를 확인하고, 드라이버마다 다른 국번을 지정한 뒤 전원을 껐다 켜고 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="285"/>
-        <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
-        <translation>드라이버가 기종을 알려주지 않습니다. --variant %1=VARIANT로 지정하십시오(%2)</translation>
-    </message>
-    <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>switches</source>
         <translation>스위치</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>state</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="308"/>
+        <location filename="../cli/ScanCommand.cpp" line="273"/>
+        <source>name</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="279"/>
         <source>comm. group</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="313"/>
+        <location filename="../cli/ScanCommand.cpp" line="284"/>
         <source>line format</source>
         <translation>통신 형식</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="328"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>the port&apos;s</source>
         <translation>포트 형식</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="387"/>
+        <location filename="../cli/ScanCommand.cpp" line="361"/>
         <source>1 drive found in %1 s</source>
         <translation>드라이버 1대 발견(%1 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="362"/>
         <source>%1 drives found in %2 s</source>
         <translation>드라이버 %1대 발견(%2 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="390"/>
+        <location filename="../cli/ScanCommand.cpp" line="364"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>; 중복 가능성이 있는 국번 1개: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="392"/>
+        <location filename="../cli/ScanCommand.cpp" line="366"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>; 중복 가능성이 있는 국번 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <location filename="../cli/ScanCommand.cpp" line="370"/>
         <source>; answered, identification failed: %1 (add by hand)</source>
         <translation>; 응답 있음, 식별 실패: %1(직접 추가)</translation>
     </message>
+</context>
+<context>
+    <name>opentop::ScanDrives</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="406"/>
-        <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
-        <translation>경고: 국번 %1(%2, %3)의 응답이 깨져 있습니다: 두 드라이버가 같은 국번을 쓰고 있을 가능성이 큽니다. 이 버스에 있는 드라이버의 SW1/SW2 스위치를 확인하고 드라이버마다 다른 국번을 준 뒤, 전원을 껐다 켜고 다시 스캔하십시오.</translation>
+        <location filename="../cli/ScanDrives.cpp" line="43"/>
+        <source>%1 — variant unknown</source>
+        <translation>%1 — 기종 알 수 없음</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanDrives.cpp" line="44"/>
+        <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
+        <translation>드라이버가 기종을 알려주지 않습니다. --variant %1=VARIANT로 지정하십시오(%2)</translation>
     </message>
 </context>
 <context>
@@ -12858,47 +13115,47 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="60"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
         <source>Main window</source>
         <translation>메인 창</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="62"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="36"/>
         <source>Everywhere, dialogs included</source>
         <translation>모든 곳(대화 상자 포함)</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="37"/>
         <source>STOP ALL (stop every drive on the bus)</source>
         <translation>전체 정지 (버스의 모든 드라이버 정지)</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="72"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="73"/>
         <source>Keyboard shortcuts</source>
         <translation>단축키</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Where</source>
         <translation>위치</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Command</source>
         <translation>명령</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Keys</source>
         <translation>키</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="86"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="87"/>
         <source> or </source>
         <translation> 또는 </translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="95"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="96"/>
         <source>STOP ALL&apos;s keys work in every window of the program, also while a dialog is open.</source>
         <translation>전체 정지 키는 대화 상자가 열려 있을 때도 프로그램의 모든 창에서 동작합니다.</translation>
     </message>
@@ -13647,9 +13904,19 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::SpnoSelector</name>
     <message>
-        <location filename="../ui/run/SpnoSelector.cpp" line="62"/>
+        <location filename="../ui/run/SpnoSelector.cpp" line="29"/>
+        <source>The running data that Select running data sends; &quot;The drive now&quot; shows the running data the drive runs</source>
+        <translation>운전 데이터 선택이 보내는 운전 데이터입니다. &quot;현재 드라이버&quot;에 드라이버가 실행 중인 운전 데이터가 표시됩니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/SpnoSelector.cpp" line="70"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/SpnoSelector.cpp" line="84"/>
+        <source>The running data that Select running data sends. The drive reported SPno%1 at %2; &quot;The drive now&quot; shows what it runs now.</source>
+        <translation>운전 데이터 선택이 보내는 운전 데이터입니다. 드라이버는 %2에 SPno%1을(를) 보고했습니다. 지금 실행 중인 것은 &quot;현재 드라이버&quot;에 표시됩니다.</translation>
     </message>
 </context>
 <context>
@@ -13668,77 +13935,77 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StartPreview</name>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="110"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="110"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="149"/>
+        <location filename="../model/run/StartPreview.cpp" line="154"/>
         <source>communication group of %1</source>
         <translation>%1의 통신 그룹</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="177"/>
+        <location filename="../model/run/StartPreview.cpp" line="182"/>
         <source>It runs with running data SPno%1</source>
         <translation>기동 시 운전 데이터: SPno%1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="179"/>
+        <location filename="../model/run/StartPreview.cpp" line="184"/>
         <source> at %1</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="182"/>
+        <location filename="../model/run/StartPreview.cpp" line="187"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>, 방향 %1 (이후 보낸 방향 명령)</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="183"/>
+        <location filename="../model/run/StartPreview.cpp" line="188"/>
         <source>, direction %1</source>
         <translation>, 방향 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="186"/>
+        <location filename="../model/run/StartPreview.cpp" line="191"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>어떤 운전 데이터로 운전할지 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="194"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="191"/>
+        <location filename="../model/run/StartPreview.cpp" line="196"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>기동 명령은 국번 %1에도 전달됩니다: %2.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="195"/>
+        <location filename="../model/run/StartPreview.cpp" line="202"/>
         <source>Not read: %1.</source>
         <translation>읽지 않음: %1.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="207"/>
+        <location filename="../model/run/StartPreview.cpp" line="219"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>국번 %1의 모터를 기동합니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="209"/>
+        <location filename="../model/run/StartPreview.cpp" line="221"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>국번 %1의 속도 명령을 %2(으)로 설정합니다: 모터가 운전합니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="213"/>
+        <location filename="../model/run/StartPreview.cpp" line="225"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>설비 주변에 사람이 없고 설비가 움직여도 되는지 확인하십시오. 전체 정지로 언제든지 모든 드라이버를 정지할 수 있습니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="216"/>
+        <location filename="../model/run/StartPreview.cpp" line="228"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>프로그램 실행 중 드라이버마다 한 번씩 확인합니다.</translation>
     </message>
@@ -13841,37 +14108,37 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>모든 드라이버에 정지를 보냈습니다. 버스에 알려진 드라이버가 없어 확인하지 않았습니다. 확인하려면 버스를 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="96"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="97"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>국번 %1: %2 s 후 정지</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="99"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="100"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>국번 %1: 아직 운전 중 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="102"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>국번 %1: 응답 없음, 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>전체 정지: 정지 브로드캐스트 실패</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>전체 정지: 정지 보냄, 확인한 드라이버 없음</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>전체 정지: 모든 드라이버 정지</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="121"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>전체 정지: 정지 확인되지 않은 드라이버 있음</translation>
     </message>
@@ -14046,92 +14313,97 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::TestRunPanel</name>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="45"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="48"/>
         <source>&lt;b&gt;Test run of machine number %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;국번 %1 시운전&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="50"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="53"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>국번 %1이(가) 알려진 제품군의 드라이버로 식별되지 않았습니다. 시운전에는 식별이 필요합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="31"/>
         <source>&amp;Start</source>
         <translation>기동(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="32"/>
         <source>S&amp;top</source>
         <translation>정지(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="33"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="34"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="35"/>
         <source>&amp;Hold</source>
         <translation>여자 유지(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="36"/>
         <source>&amp;Free</source>
         <translation>여자 해제(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="141"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="54"/>
         <source>Se&amp;lect running data</source>
         <translation>운전 데이터 선택(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="152"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="67"/>
         <source>Return to &amp;I/O priority</source>
         <translation>I/O 우선으로 복귀(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="154"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="69"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>운전, 정지, 방향, 속도 선택을 드라이버의 입력 단자로 되돌립니다</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="200"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="160"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>드라이버가 운전 명령을 받는지 확인하기 위해 %1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="236"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="196"/>
+        <source>Not started: the variant of %1 was not given.</source>
+        <translation>시작하지 않았습니다: %1의 기종이 지정되지 않았습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/TestRunPanel.cpp" line="203"/>
         <source>Reading what the start will run…</source>
         <translation>기동 시 운전할 내용을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="252"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="219"/>
         <source>Start the motor</source>
         <translation>모터 기동</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="266"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="233"/>
         <source>Sending %1…</source>
         <translation>%1 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="295"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="262"/>
         <source>Not every drive of its communication group runs: see below.</source>
         <translation>통신 그룹의 모든 드라이버가 운전 중인 것은 아닙니다: 아래를 보십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="280"/>
         <source>Sent: %1</source>
         <translation>보냄: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="382"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="349"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>폴링이 일시 정지되었습니다: 컨트롤러는 마지막 프레임을 받은 뒤 %1 s가 지나면 모터에 브레이크를 겁니다(%2). 모터를 계속 운전하려면 폴링을 재개하십시오.</translation>
     </message>
@@ -15106,23 +15378,23 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="32"/>
-        <location filename="../ui/trends/TrendChart.cpp" line="58"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="33"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="59"/>
         <source>Time (hh:mm:ss)</source>
         <translation>시간 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="105"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="109"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="296"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="300"/>
         <source>There is no trend data to export yet.</source>
         <translation>아직 내보낼 트렌드 데이터가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="309"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="313"/>
         <source>Cannot write the picture %1.</source>
         <translation>이미지 %1을(를) 저장할 수 없습니다.</translation>
     </message>
@@ -16463,6 +16735,77 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/profile/ValueCodec.cpp" line="489"/>
         <source>unknown code %1</source>
         <translation>알 수 없는 코드 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantNeed</name>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="19"/>
+        <source>%1 and %2 more</source>
+        <translation>%1 외 %2개</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="69"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="77"/>
+        <source>Allowed %1 — %2</source>
+        <translation>허용값 %1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="94"/>
+        <source>The allowed values of the settings you are changing depend on it.</source>
+        <translation>변경하려는 설정의 허용값이 기종에 따라 다릅니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="97"/>
+        <source>The backup file records it, and a restore checks the values against it.</source>
+        <translation>백업 파일에 기종이 기록되고, 복원 시 기종에 따라 값을 검사합니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="100"/>
+        <source>The speeds the motor may run at depend on it.</source>
+        <translation>모터가 운전할 수 있는 속도가 기종에 따라 다릅니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="104"/>
+        <source>Which drive is %1? It reports only &quot;%2&quot;, not whether it is a %3.</source>
+        <translation>%1은(는) 어떤 드라이버입니까? &quot;%2&quot;만 보고하고 %3인지는 보고하지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="105"/>
+        <source> or </source>
+        <translation> 또는 </translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="108"/>
+        <source>Read it on the drive&apos;s rating plate. It is kept for this bus and asked once; without it every value must suit all of them.</source>
+        <translation>드라이버 명판에서 확인하십시오. 이 버스에 저장되며 한 번만 묻습니다. 지정하지 않으면 모든 값이 모든 기종에 맞아야 합니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="112"/>
+        <source>Last time on this bus it was set as %1.</source>
+        <translation>지난번 이 버스에서는 %1(으)로 설정했습니다.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantQuestion</name>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="29"/>
+        <source>Which drive is it?</source>
+        <translation>어떤 드라이버입니까?</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="41"/>
+        <source>Not known: check against every variant</source>
+        <translation>모름: 모든 기종 기준으로 검사</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
+        <source>the variant of %1 was not given</source>
+        <translation>%1의 기종이 지정되지 않았습니다</translation>
     </message>
 </context>
 <context>

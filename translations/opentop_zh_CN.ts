@@ -86,107 +86,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="69"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="70"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="89"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="90"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="92"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="94"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="95"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="97"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="98"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="104"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="105"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="108"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="109"/>
         <source>%1: no records.</source>
         <translation>%1：无记录。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="111"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="112"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="116"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="123"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="124"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="130"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="131"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="133"/>
         <source>Remedy: %1</source>
         <translation>处理方法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="135"/>
         <source>To clear: %1</source>
         <translation>清除方法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="140"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="141"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通信错误寄存器（%1）：无法读取。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="144"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="145"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通信错误寄存器（%1）：无（0）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="147"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="148"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通信错误寄存器（%1）：%2，不是已知代码。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="151"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="152"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -260,192 +260,192 @@
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="49"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
         <source>top level</source>
         <translation>顶层</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="54"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必须为 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="62"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必须是小写 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="70"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="72"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必须为 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必须为 1200–115200，stopBits 必须为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="86"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="88"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats：“%1”不是 8N1 或 8E1 这样的格式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="92"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats 必须包含默认格式 %1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="96"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs 必须为 0–60000</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="107"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 1–125，maxWriteRegisters 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必须在 1–247 范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="124"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="137"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="139"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="148"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="150"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能码 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="192"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
         <source>%1 has no name</source>
         <translation>%1 没有名称</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必须是 %2 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="197"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="199"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代码 %2 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是命令参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="220"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：默认值不在允许值范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="224"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位域 &quot;%2&quot;：功能 &quot;%3&quot; 不是可读参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：条件引用了未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：当 %2 时不允许使用默认值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="243"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出地址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 与 &quot;%2&quot; 在 0x%3 处重叠（%4 个寄存器）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="270"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必须是 identify 读取范围内的参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="273"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正则表达式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="285"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="313"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必须是参数名、参数名列表或对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="322"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 没有位域 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="328"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是可用于写入 &quot;%3&quot; 的值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="346"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 需要 &quot;selected&quot; 和 &quot;maxSeconds&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="365"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重复出现</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="370"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1：&quot;maxSeconds&quot; 必须大于 0 且不超过 600</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="402"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1：&quot;light&quot; 必须是 %2 之一，且每个只能出现一次</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="405"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1：&quot;colour&quot; 必须为 #rrggbb</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1：&quot;label&quot; 和 &quot;meaning&quot; 不能为空</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="56"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="57"/>
         <source> and %1 more</source>
         <translation> 及另外 %1 个</translation>
     </message>
@@ -471,6 +471,29 @@
         <location filename="../ui/help/AboutDialog.cpp" line="45"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AddressSwitches</name>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="66"/>
+        <source>address.names: every switch needs a name</source>
+        <translation>address.names：每个开关都需要名称</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="74"/>
+        <source>address.switches must be &quot;hex-rotary&quot; or &quot;binary-dip&quot;</source>
+        <translation>address.switches 必须为 &quot;hex-rotary&quot; 或 &quot;binary-dip&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="78"/>
+        <source>address.names: 1–%1 switches for this notation</source>
+        <translation>address.names：此表示法需要 1–%1 个开关</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/AddressSwitches.cpp" line="81"/>
+        <source>address: the switches (%1) cannot set machine number %2</source>
+        <translation>address：这些开关（%1）无法设定站号 %2</translation>
     </message>
 </context>
 <context>
@@ -526,84 +549,89 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Machine</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Kind</source>
         <translation>类型</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="45"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
         <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <source>Machine name</source>
+        <translation>机器名称</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Panel code</source>
         <translation>面板代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
         <source>Remedy</source>
         <translation>处理方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="49"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="58"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="59"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="103"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="105"/>
         <source>machine %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="128"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>已将 %1 台驱动器的 %n 条记录写入 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="133"/>
         <source>Not everything could be read: %1</source>
         <translation>部分内容无法读取：%1</translation>
     </message>
@@ -678,92 +706,92 @@
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="163"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="164"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>显示报警和警告履历及原因与处理方法；复位、清除记录</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="170"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="171"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>发送报警复位命令，然后显示报警是否已清除或需要重新上电（需要 --yes；报警仍存在时退出码为 4）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>清除报警和警告记录（需要 --yes）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>确认 --reset 和 --clear-records。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="184"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="185"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>错误：用法：%1（一个站号）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="192"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="193"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="198"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="199"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>错误：站号 %1（%2）不保存报警或警告记录</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="205"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="206"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>错误：%1 驱动器没有 %2 命令</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
         <source>alarm reset</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
         <source>record erase</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="218"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="219"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下操作将修改站号 %1；加上 --yes 才会发送：</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="222"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="223"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 若原因已排除且该报警并非只能重新上电清除，则清除当前报警</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="246"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="248"/>
         <source>Machine number %1 (%2)</source>
         <translation>站号 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="272"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="276"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="295"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="298"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="306"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -771,143 +799,143 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
         <source>&amp;Re-read</source>
         <translation>重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
         <source>Reset &amp;alarm…</source>
         <translation>报警复位(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="62"/>
         <source>&amp;Clear records…</source>
         <translation>清除记录(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="65"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>站号 %1（%2）的报警和警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="92"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="109"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="111"/>
         <source>Cause and remedy</source>
         <translation>原因和处理方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="110"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="112"/>
         <source>Communication error register</source>
         <translation>通信错误寄存器</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="123"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>发送报警复位命令；显示报警是否已清除或只能重新上电清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驱动器保存的报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="130"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="301"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="132"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="303"/>
         <source>Select a record to see its cause and remedy.</source>
         <translation>选择一条记录查看其原因和处理方法。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="131"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
         <source>Not read yet.</source>
         <translation>尚未读取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="135"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>该驱动器不保存报警或警告记录。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="163"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="165"/>
         <source>Alarm state: %1</source>
         <translation>报警状态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="255"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
         <source>Reading the records…</source>
         <translation>正在读取记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="277"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="278"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="280"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="282"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="284"/>
         <source>Could not be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>This drive has no communication error register.</source>
         <translation>该驱动器没有通信错误寄存器。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>%1: could not be read.</source>
         <translation>%1：无法读取。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>%1: no error (0).</source>
         <translation>%1：无错误（0）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="315"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
         <source>%1: %2, not a known code.</source>
         <translation>%1：%2，不是已知代码。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="319"/>
         <source>%1: %2 %3
 Cause: %4
 Remedy: %5</source>
@@ -916,153 +944,153 @@ Remedy: %5</source>
 处理方法：%5</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
         <source>No alarm records</source>
         <translation>无报警记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="329"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
         <source>No warning records</source>
         <translation>无警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="335"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="337"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="338"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="340"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="349"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="351"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="378"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
         <source>Record %1: code %2 is not in the %3 table.</source>
         <translation>记录 %1：代码 %2 不在 %3 表中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="383"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
         <source>%1 %2 (record %3)</source>
         <translation>%1 %2（记录 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
         <source>Remedy: %1</source>
         <translation>处理方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="391"/>
         <source>To clear: %1</source>
         <translation>清除方法：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="418"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="420"/>
         <source>Writes: %1</source>
         <translation>写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="419"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，将清除当前报警。部分报警只能通过重新上电清除；结果会给出提示。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="422"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="428"/>
         <source>Reset alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="425"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="427"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>向站号 %1 发送报警复位命令？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="433"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="435"/>
         <source>Sending the alarm reset…</source>
         <translation>正在发送报警复位…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="439"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="441"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="442"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="444"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>请关闭驱动器电源，等待 5 s 后再接通。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="453"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 条记录）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
         <source>the alarm and warning records</source>
         <translation>报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="456"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
         <source>Clear records</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source>Erase %1 of machine %2?</source>
         <translation>清除站号 %2 的%1？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
         <source> and </source>
         <translation> 和 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="458"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="461"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>记录清除后无法恢复。写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="463"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="467"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
         <source>Erasing the records…</source>
         <translation>正在清除记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="475"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="479"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="482"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="484"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -1328,160 +1356,157 @@ Remedy: %5</source>
     </message>
 </context>
 <context>
-    <name>opentop::BackupDevice</name>
-    <message>
-        <location filename="../model/files/BackupDevice.cpp" line="75"/>
-        <source>drive %1 (%2)</source>
-        <translation>驱动器 %1（%2）</translation>
-    </message>
-</context>
-<context>
     <name>opentop::BackupDialog</name>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="28"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="29"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
         <source>&amp;Save the drives read</source>
         <translation>保存已读取的驱动器(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="30"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="31"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="32"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
         <source>Back up drives</source>
         <translation>备份驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="34"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="41"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>仅保存已读取的驱动器；其余的不保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="43"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
         <source>Stop after the drive being read</source>
         <translation>读完当前驱动器后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="89"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="72"/>
+        <source>Nothing was read: %1.</source>
+        <translation>未读取任何数据：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/BackupDialog.cpp" line="97"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="93"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="101"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驱动器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="94"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在读取 %n 台驱动器的设定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="104"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
         <source>Stopping after the drive being read…</source>
         <translation>读完当前驱动器后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="121"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
         <source>Not read (cancelled)</source>
         <translation>未读取（已取消）</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="131"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>驱动器 %1：未识别，未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="132"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
         <source>Not identified</source>
         <translation>未识别</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="148"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%1 ms 内读取了 %n 项设定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="157"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="159"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
         <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
         <source>Value not allowed</source>
         <translation>值不允许</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="162"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
         <source>Read failed</source>
         <translation>读取失败</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="182"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未读取：驱动器 %1。尚未保存任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="188"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="196"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>保存已读取的 %n 台驱动器？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="212"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 台驱动器保存到 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="218"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="226"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>未保存（未读取）：驱动器 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="222"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="230"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -1489,7 +1514,7 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFile</name>
     <message>
-        <location filename="../model/files/BackupFile.cpp" line="290"/>
+        <location filename="../model/files/BackupFile.cpp" line="309"/>
         <source>%1 is larger than %2 MB, the most a backup file may hold (a backup of 247 drives is far smaller); not a backup file</source>
         <translation>%1 大于 %2 MB，超过备份文件的上限（247 台驱动器的备份也远小于此）；不是备份文件</translation>
     </message>
@@ -1497,122 +1522,132 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupFileParser</name>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="48"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="49"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 文件：%1，位于字节 %2</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="52"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="53"/>
         <source>not an OpenTOP backup file: the JSON is not an object</source>
         <translation>不是 OpenTOP 备份文件：JSON 不是对象</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="62"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="63"/>
         <source>&quot;created&quot; is not an ISO 8601 date and time</source>
         <translation>&quot;created&quot; 不是 ISO 8601 日期时间</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="74"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="75"/>
         <source>the file holds no drives (&quot;devices&quot; must be a non-empty list)</source>
         <translation>文件中没有驱动器（&quot;devices&quot; 必须是非空列表）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="81"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="82"/>
         <source>%1: not a drive</source>
         <translation>%1：不是驱动器</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="83"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="84"/>
         <source>machine number %1 appears twice</source>
         <translation>站号 %1 出现了两次</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="97"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="98"/>
         <source>not an OpenTOP backup file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 备份文件（&quot;format&quot; 为 &quot;%1&quot;，而非 &quot;%2&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="99"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="100"/>
         <source>not an OpenTOP backup file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 备份文件（没有 &quot;format&quot;: &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="104"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="105"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必须是从 1 起的整数</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="106"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="107"/>
         <source>written by a newer OpenTOP (format version %1); this version reads format version %2</source>
         <translation>由更新版本的 OpenTOP 写入（格式版本 %1）；本版本读取格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="112"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="113"/>
         <source>the file has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>文件没有校验和（&quot;checksum&quot;: &quot;sha256:…&quot;）；它不是由 OpenTOP 写入的，或写入后被修改过</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="117"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="118"/>
         <source>the file was changed after it was written (checksum mismatch)</source>
         <translation>文件在写入后被修改过（校验和不一致）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="127"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
         <source>%1: &quot;slave&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;slave&quot; 必须是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="128"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="129"/>
         <source>%1 (machine number %2)</source>
         <translation>%1（站号 %2）</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="132"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="133"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1：未知系列 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="137"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="138"/>
         <source>%1: &quot;variant&quot; must be text or null</source>
         <translation>%1：&quot;variant&quot; 必须是文本或 null</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="142"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="143"/>
         <source>%1: unknown variant &quot;%2&quot; of family %3; known: %4</source>
         <translation>%1：系列 %3 的未知机型 &quot;%2&quot;；已知：%4</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="144"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="145"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="151"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="153"/>
+        <source>%1: &quot;machineName&quot; must be text</source>
+        <translation>%1：&quot;machineName&quot; 必须是文本</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BackupFileParser.cpp" line="155"/>
+        <source>%1: &quot;machineName&quot;: %2</source>
+        <translation>%1：&quot;machineName&quot;：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BackupFileParser.cpp" line="160"/>
         <source>%1: &quot;parameters&quot; must be a list</source>
         <translation>%1：&quot;parameters&quot; 必须是列表</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="171"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="180"/>
         <source>%1: no &quot;name&quot;</source>
         <translation>%1：没有 &quot;name&quot;</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="174"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="183"/>
         <source>%1 %2: &quot;registers&quot; must be a list</source>
         <translation>%1 %2：&quot;registers&quot; 必须是列表</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="178"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="187"/>
         <source>%1 %2: registers must be numbers 0–65535</source>
         <translation>%1 %2：寄存器必须是 0–65535 的数字</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="184"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="193"/>
         <source>%1 %2: address &quot;%3&quot;, but the %4 profile has it at %5</source>
         <translation>%1 %2：地址为 &quot;%3&quot;，但 %4 设备描述中其地址为 %5</translation>
     </message>
     <message>
-        <location filename="../model/files/BackupFileParser.cpp" line="209"/>
+        <location filename="../model/files/BackupFileParser.cpp" line="218"/>
         <source>%1: %2: &quot;value&quot; %3 does not match its registers (%4)</source>
         <translation>%1：%2：&quot;value&quot; %3 与其寄存器不一致（%4）</translation>
     </message>
@@ -1772,28 +1807,28 @@ Drives: %5</source>
 <context>
     <name>opentop::BusDocks</name>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="27"/>
+        <location filename="../ui/main/BusDocks.cpp" line="28"/>
         <source>Traffic log</source>
         <translation>报文日志</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="34"/>
+        <location filename="../ui/main/BusDocks.cpp" line="35"/>
         <source>Bus overview</source>
         <translation>总线总览</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="35"/>
+        <location filename="../ui/main/BusDocks.cpp" line="36"/>
         <source>Trends</source>
         <translation>趋势</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="36"/>
+        <location filename="../ui/main/BusDocks.cpp" line="37"/>
         <source>Communication groups</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../ui/main/BusDocks.cpp" line="39"/>
-        <location filename="../ui/main/BusDocks.cpp" line="77"/>
+        <location filename="../ui/main/BusDocks.cpp" line="40"/>
+        <location filename="../ui/main/BusDocks.cpp" line="110"/>
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
@@ -1801,53 +1836,87 @@ Drives: %5</source>
 <context>
     <name>opentop::BusGroups</name>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="108"/>
+        <location filename="../model/bus/BusGroups.cpp" line="109"/>
         <source>machine number %1 is the parent of communication group %1: what is sent to it is also executed by %2 (children do not reply)</source>
         <translation>站号 %1 是通信组 %1 的组父站：发送给它的内容也会由 %2 执行（组子站不应答）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="118"/>
+        <location filename="../model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="136"/>
         <source>%1 and %2</source>
         <translation>%1 和 %2</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="127"/>
+        <location filename="../model/bus/BusGroups.cpp" line="145"/>
         <source>This also reaches machine number %1 (the child of communication group %2; it executes it without replying).</source>
         <translation>该操作也会作用于站号 %1（通信组 %2 的组子站；执行但不应答）。</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="131"/>
+        <location filename="../model/bus/BusGroups.cpp" line="149"/>
         <source>This also reaches machine numbers %1 (the children of communication group %2; they execute it without replying).</source>
         <translation>该操作也会作用于站号 %1（通信组 %2 的组子站；执行但不应答）。</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="141"/>
+        <location filename="../model/bus/BusGroups.cpp" line="159"/>
         <source>child of %1</source>
         <translation>%1 的组子站</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="144"/>
+        <location filename="../model/bus/BusGroups.cpp" line="162"/>
         <source>parent of %1</source>
         <translation>%1 的组父站</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="152"/>
+        <location filename="../model/bus/BusGroups.cpp" line="170"/>
         <source>machine number %1 is a child of %2 and itself a parent: a child must not be a group parent</source>
         <translation>站号 %1 是 %2 的组子站，本身又是组父站：组子站不能同时是组父站</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusGroups.cpp" line="157"/>
+        <location filename="../model/bus/BusGroups.cpp" line="175"/>
         <source>machine number %1 is in communication group %2, but no drive %2 is known: frames to %2 reach %1 although nothing answers</source>
         <translation>站号 %1 属于通信组 %2，但没有已知的驱动器 %2：发往 %2 的报文会作用于 %1，但无任何应答</translation>
     </message>
 </context>
 <context>
-    <name>opentop::BusListModel</name>
+    <name>opentop::BusListMenu</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
-        <source>The machine number in hexadecimal, as the drive&apos;s rotary switches SW1 (high digit) and SW2 (low digit) are set</source>
-        <translation>十六进制站号，对应驱动器旋转开关 SW1（高位）和 SW2（低位）的设定</translation>
+        <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
+        <source>&amp;Name this machine…</source>
+        <translation>为此机器命名(&amp;N)…</translation>
     </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="35"/>
+        <source>&amp;Identify again</source>
+        <translation>重新识别(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="46"/>
+        <source>&amp;Remove from list</source>
+        <translation>从列表中移除(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="61"/>
+        <source>Name of %1 (up to %2 characters; empty removes the name):</source>
+        <translation>%1 的名称（最多 %2 个字符；留空即删除名称）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="67"/>
+        <source>Name this machine</source>
+        <translation>为此机器命名</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="74"/>
+        <source>Machine number %1 has no name now.</source>
+        <translation>站号 %1 现在没有名称。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListMenu.cpp" line="75"/>
+        <source>Machine number %1 is now named %2.</source>
+        <translation>站号 %1 现在名为 %2。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::BusListModel</name>
     <message>
         <location filename="../ui/bus/BusListModel.cpp" line="75"/>
         <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
@@ -1869,91 +1938,113 @@ Drives: %5</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
-        <source>Hex / switches</source>
-        <translation>十六进制 / 开关</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="98"/>
         <source>Control priority</source>
         <translation>控制优先级</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="111"/>
-        <source>Two drives may share machine number %1 (%2, %3): check the SW1/SW2 switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
-        <translation>可能有两台驱动器共用站号 %1（%2、%3）：请检查线路上每台驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号并重新上电；终端电阻不当或 A/B 线接反也会导致应答出错。</translation>
+        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
+        <source>How each drive&apos;s machine number is set on its switches:
+%1</source>
+        <translation>各驱动器的站号在其开关上的设定方式：
+%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="131"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <source>Switches</source>
+        <translation>开关</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="100"/>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="112"/>
+        <source>Two drives may share machine number %1 (%2): check the address switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
+        <translation>可能有两台驱动器共用站号 %1（%2）：请检查线路上每台驱动器的地址开关，为每台驱动器设定各自的站号并重新上电；终端电阻不良或 A/B 接反也会使应答损坏。</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
         <source>%1 at %2</source>
         <translation>%1，%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="132"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="137"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="135"/>
         <location filename="../ui/bus/BusListModel.cpp" line="139"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="145"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="147"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="166"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>状态灯 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="174"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>驱动器手册：%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="173"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="177"/>
         <source>Status light grey: not live — %1</source>
         <translation>状态灯灰色：非实时 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <source>No name yet: Name… in the context menu (F2) names this machine</source>
+        <translation>尚无名称：在右键菜单中选择“命名…”（F2）为此机器命名</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
+        <source>%1: the name given to this machine (F2 changes it)</source>
+        <translation>%1：此机器的名称（F2 可更改）</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusListModel.cpp" line="189"/>
         <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
         <translation>发往该驱动器的请求以它自己的通信格式 %1 发送，而不是端口的格式：线路在两次通信之间切换过去再切换回来。可在右键菜单的“通信格式…”中更改。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="196"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>该驱动器未报告其机型。请在右键菜单（机型）中选择，以便按正确的限值检查数值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="194"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="205"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>该驱动器通过 I/O 端子接收运行命令；通过总线试运行需要通信优先级。</translation>
     </message>
@@ -1961,7 +2052,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../model/bus/BusMemory.cpp" line="44"/>
+        <location filename="../model/bus/BusMemory.cpp" line="73"/>
         <source>the simulated bus</source>
         <translation>模拟总线</translation>
     </message>
@@ -2045,137 +2136,144 @@ Drives: %5</source>
 <context>
     <name>opentop::BusPanel</name>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="34"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="35"/>
         <source>&amp;Scan</source>
         <translation>扫描(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="37"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="38"/>
         <source>A&amp;dd drive…</source>
         <translation>添加驱动器(&amp;D)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="39"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="40"/>
         <source>Ca&amp;ncel</source>
         <translation>取消(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="48"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
         <source>Ask every machine number of the range who answers</source>
         <translation>逐个询问范围内的每个站号是否应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="50"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
         <source>&amp;from</source>
         <translation>从(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="52"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="54"/>
         <source>&amp;to</source>
         <translation>到(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="57"/>
-        <source>Machine numbers 1–247 (the DBU&apos;s SW1/SW2 switches in hex)</source>
-        <translation>站号 1–247（DBU 的 SW1/SW2 开关，十六进制）</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="74"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="77"/>
         <source>Identify one machine number and add it to the list</source>
         <translation>识别一个站号并将其添加到列表</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="79"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="193"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="220"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="80"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="83"/>
         <source>Scan progress</source>
         <translation>扫描进度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="82"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="85"/>
         <source>Stop the scan after the request on the wire</source>
         <translation>在当前线路上的请求完成后停止扫描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="91"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="94"/>
         <source>Rescan at %1</source>
         <translation>以 %1 重新扫描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="118"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="134"/>
         <source>Drives on the bus</source>
         <translation>总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="179"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="150"/>
+        <source>Name this machine…</source>
+        <translation>为此机器命名…</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="206"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（站号 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="183"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="210"/>
         <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
         <translation>站号 %1 有应答，但识别失败：正在重试（第 %2 次，共 %3 次）… 轮询将等到扫描结束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="195"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="222"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms… 轮询将等到扫描结束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="294"/>
         <source>If one is on this bus, add it with Add drive and its line format.</source>
         <translation>如果总线上有这种驱动器，请用“添加驱动器”连同它的通信格式添加。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="299"/>
         <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
         <translation>站号 %1 有应答，但识别失败，重新询问也一样：请用“添加驱动器…”手动添加，或检查它的通信设定后重新扫描。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="215"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>正在等待线路上的请求完成后取消…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="233"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="59"/>
+        <source>Machine numbers 1–247, as set on each drive&apos;s switches:
+%1</source>
+        <translation>站号 1–247，按各驱动器开关的设定：
+%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/BusPanel.cpp" line="260"/>
         <source>Did not answer the last scan.</source>
         <translation>上次扫描未应答。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="239"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="266"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>扫描在站号 %1 处停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="244"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>在站号 %1–%2 后取消扫描（%4 个中的 %3 个）：找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="252"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="279"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在 %3 s 内于站号 %1–%2 上找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="293"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="320"/>
         <source>Asking machine number %1…</source>
         <translation>正在询问站号 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="298"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="325"/>
         <source>Machine number %1: %2 added.</source>
         <translation>站号 %1：已添加 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="327"/>
         <source>Machine number %1: %2 %3</source>
         <translation>站号 %1：%2 %3</translation>
     </message>
@@ -2184,46 +2282,36 @@ Drives: %5</source>
         <source>&amp;Variant</source>
         <translation>机型(&amp;V)</translation>
     </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="349"/>
-        <source>&amp;Identify again</source>
-        <translation>重新识别(&amp;I)</translation>
-    </message>
-    <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="360"/>
-        <source>&amp;Remove from list</source>
-        <translation>从列表中移除(&amp;R)</translation>
-    </message>
 </context>
 <context>
     <name>opentop::BusRecallBar</name>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="20"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="21"/>
         <source>&amp;Scan the bus</source>
         <translation>扫描总线(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="42"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="43"/>
         <source>Last time on %1: %2.</source>
         <translation>上次在 %1 上：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>恢复上次识别到的驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>恢复上次识别到的 %1 台驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>按上次设定的机型，重新识别这些站号上的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="60"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="61"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 上尚无已知的驱动器。请扫描总线查找驱动器。</translation>
     </message>
@@ -2231,22 +2319,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="222"/>
-        <source>garbled replies twice (%1): two drives probably share machine number %2; check their SW1/SW2 switches</source>
-        <translation>两次应答报文损坏（%1）：可能有两台驱动器共用站号 %2；请检查它们的 SW1/SW2 开关</translation>
+        <location filename="../model/bus/BusScanner.cpp" line="223"/>
+        <source>garbled replies twice (%1): two drives probably share machine number %2; check their address switches (%3)</source>
+        <translation>两次收到损坏的应答（%1）：可能有两台驱动器共用站号 %2；请检查其地址开关（%3）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="227"/>
+        <location filename="../model/bus/BusScanner.cpp" line="229"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有应答，但没有匹配的设备描述（%1）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="245"/>
+        <location filename="../model/bus/BusScanner.cpp" line="247"/>
         <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
         <translation>有应答，但识别读取没有回复（%1），再询问 %2 次仍然如此：请手动添加，或用更长的等待时间重新扫描</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="311"/>
+        <location filename="../model/bus/BusScanner.cpp" line="333"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>首次应答较迟（超过 %1 ms 等待时间）；加长等待时间可使该总线的扫描更可靠</translation>
     </message>
@@ -2605,49 +2693,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="90"/>
-        <location filename="../cli/CliContext.cpp" line="104"/>
-        <location filename="../cli/CliContext.cpp" line="112"/>
+        <location filename="../cli/CliContext.cpp" line="91"/>
+        <location filename="../cli/CliContext.cpp" line="105"/>
+        <location filename="../cli/CliContext.cpp" line="113"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="117"/>
+        <location filename="../cli/CliContext.cpp" line="118"/>
         <source>serial line: %1</source>
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="142"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="204"/>
+        <location filename="../cli/CliContext.cpp" line="224"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="209"/>
+        <location filename="../cli/CliContext.cpp" line="229"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="264"/>
+        <location filename="../cli/CliContext.cpp" line="287"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="268"/>
+        <location filename="../cli/CliContext.cpp" line="291"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="286"/>
+        <location filename="../cli/CliContext.cpp" line="309"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="296"/>
+        <location filename="../cli/CliContext.cpp" line="319"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -2721,100 +2809,100 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="34"/>
+        <location filename="../cli/CompareCommand.cpp" line="35"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>显示不同的设定；A、B：站号、FILE 或 FILE:ID（无论是否有差异，退出码均为 0）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="41"/>
+        <location filename="../cli/CompareCommand.cpp" line="42"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>将 A 与设备描述中的出厂默认值比较；手册未给出默认值的设定会列出，但不计为差异。</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="54"/>
-        <location filename="../cli/CompareCommand.cpp" line="88"/>
-        <location filename="../cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="55"/>
+        <location filename="../cli/CompareCommand.cpp" line="90"/>
+        <location filename="../cli/CompareCommand.cpp" line="148"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="67"/>
+        <location filename="../cli/CompareCommand.cpp" line="68"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="72"/>
+        <location filename="../cli/CompareCommand.cpp" line="73"/>
         <source>error: %1: cannot read %2</source>
         <translation>错误：%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="76"/>
+        <location filename="../cli/CompareCommand.cpp" line="77"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="107"/>
+        <location filename="../cli/CompareCommand.cpp" line="109"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>错误：%1 包含多台驱动器（%2）：请用 %1:ID 指定其中一台</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="110"/>
+        <location filename="../cli/CompareCommand.cpp" line="112"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>错误：%1 中没有站号为 %2 的驱动器；其中有 %3</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="126"/>
+        <location filename="../cli/CompareCommand.cpp" line="128"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>错误：compare A B 或 compare A --defaults（A、B：站号、FILE 或 FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="171"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>A: %1 (%2)</source>
         <translation>A：%1（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="172"/>
+        <location filename="../cli/CompareCommand.cpp" line="174"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="177"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
-        <location filename="../cli/CompareCommand.cpp" line="178"/>
+        <location filename="../cli/CompareCommand.cpp" line="179"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="185"/>
         <source>no differences (%1 settings compared)</source>
         <translation>无差异（共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="190"/>
+        <location filename="../cli/CompareCommand.cpp" line="192"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
@@ -2847,137 +2935,137 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>B 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="49"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="55"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="63"/>
         <source>Filter by setting or parameter name</source>
         <translation>按设定名或参数名筛选</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="57"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="65"/>
         <source>Read the chosen sides and compare them (drives are read fresh)</source>
         <translation>读取所选两侧并进行比较（驱动器会重新读取）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="67"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="75"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="100"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="108"/>
         <source>%1 refused: %2</source>
         <translation>%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="114"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="122"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
         <source>side A</source>
         <translation>A 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="139"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
         <source>side B</source>
         <translation>B 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="143"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="151"/>
         <source>Factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="158"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>请为%1选择一个备份文件及其中的一台驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="164"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>请为%1选择总线上一台已识别的驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="180"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="197"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="205"/>
         <source>Unknown family %1</source>
         <translation>未知系列 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="216"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
         <source>A: %1</source>
         <translation>A：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="217"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="225"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="218"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
         <source>factory defaults (%1)</source>
         <translation>出厂默认值（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="236"/>
         <source>(no documented default)</source>
         <translation>（无文档默认值）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="231"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="237"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="247"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="255"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 处差异</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="248"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="251"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
         <source>Note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="266"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>无文档出厂默认值（不计为差异）：%1</translation>
     </message>
@@ -2985,62 +3073,62 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareSide</name>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="22"/>
+        <location filename="../ui/files/CompareSide.cpp" line="23"/>
         <source>Browse…</source>
         <translation>浏览…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="25"/>
+        <location filename="../ui/files/CompareSide.cpp" line="27"/>
         <source>Drive on the bus</source>
         <translation>总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="26"/>
+        <location filename="../ui/files/CompareSide.cpp" line="28"/>
         <source>Drive in a backup file</source>
         <translation>备份文件中的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="28"/>
+        <location filename="../ui/files/CompareSide.cpp" line="30"/>
         <source>Factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="32"/>
+        <location filename="../ui/files/CompareSide.cpp" line="34"/>
         <source>Drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="36"/>
+        <location filename="../ui/files/CompareSide.cpp" line="41"/>
         <source>Backup file</source>
         <translation>备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="41"/>
+        <location filename="../ui/files/CompareSide.cpp" line="46"/>
         <source>Source:</source>
         <translation>来源：</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="42"/>
+        <location filename="../ui/files/CompareSide.cpp" line="47"/>
         <source>Drive:</source>
         <translation>驱动器：</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="43"/>
+        <location filename="../ui/files/CompareSide.cpp" line="48"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="44"/>
+        <location filename="../ui/files/CompareSide.cpp" line="49"/>
         <source>Drive in file:</source>
         <translation>文件中的驱动器：</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="123"/>
+        <location filename="../ui/files/CompareSide.cpp" line="170"/>
         <source>Open backup file</source>
         <translation>打开备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareSide.cpp" line="124"/>
+        <location filename="../ui/files/CompareSide.cpp" line="171"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
@@ -3650,237 +3738,237 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::DcControllerPage</name>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="42"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="43"/>
         <source>DC controller</source>
         <translation>直流控制器</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="45"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="46"/>
         <source>Re&amp;load stored configuration</source>
         <translation>重新载入已保存的配置(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="67"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
         <source>Store &amp;configuration</source>
         <translation>保存配置(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="68"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
         <source>Store P&amp;ID</source>
         <translation>保存 PID(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="69"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="70"/>
         <source>Store pre&amp;set</source>
         <translation>保存预设(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="72"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="73"/>
         <source>Writes %1 = 1: %2</source>
         <translation>写入 %1 = 1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="77"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="78"/>
         <source>Writes store.config = 0: the controller reloads the stored configuration; unstored configuration changes are discarded</source>
         <translation>写入 store.config = 0：控制器重新载入已保存的配置；未保存的配置修改将被丢弃</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="84"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
         <source>Speed mode and motor currents</source>
         <translation>速度模式和电机电流</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="85"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
         <source>Speed &amp;mode:</source>
         <translation>速度模式(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="86"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
         <source>Rated current:</source>
         <translation>额定电流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="87"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
         <source>Maximum start/load current:</source>
         <translation>最大启动/负载电流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="88"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="89"/>
         <source>Brake current:</source>
         <translation>制动电流：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="90"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
         <source>Limit switches</source>
         <translation>限位开关</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="91"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
         <source>Limits:</source>
         <translation>限位：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="92"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
         <source>SQ1 active level (forward):</source>
         <translation>SQ1 有效电平（正转）：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="93"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="94"/>
         <source>SQ2 active level (reverse):</source>
         <translation>SQ2 有效电平（反转）：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="95"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
         <source>Protective stops (0 = off)</source>
         <translation>保护停止（0 = 关闭）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="96"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
         <source>S&amp;tall stop time:</source>
         <translation>堵转停止时间(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="97"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="98"/>
         <source>Communication loss stop time:</source>
         <translation>通信中断停止时间：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="105"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
         <source>Serial port (used from the next power-up)</source>
         <translation>串口（从下次上电起生效）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="110"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="111"/>
         <source>Baud rate and parity are written as one 15-register block from 0x0080 that also stores the configuration; the controller uses them from the next power-up on: switch it off and on, then reconnect with them. The lock is lost at power-off until stored (Store configuration).</source>
         <translation>波特率和校验位以从 0x0080 起的一个 15 寄存器块写入，该写入同时保存配置；控制器从下次上电起使用新设定：请将其断电再上电，然后用新设定重新连接。串口配置锁定在保存（保存配置）前断电即丢失。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="132"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="133"/>
         <source>Takes effect now and is kept over power-off: each change is written as one 5-register block from 0x0050 that also stores the port states.</source>
         <translation>立即生效，断电后保留：每次修改都以从 0x0050 起的一个 5 寄存器块写入，该写入同时保存端口状态。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="176"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="175"/>
         <source>The communication loss stop time is 0 s (%1): the manual does not say what 0 does, and OpenTOP assumes the stop is then off: if the connection is lost while the motor runs, the controller keeps it running at the last speed command. Set a time so that it brakes when the bus goes quiet.</source>
         <translation>通信中断停止时间为 0 s（%1）：手册没有说明 0 的作用，OpenTOP 假定此时该停止功能关闭：如果电机运行时连接中断，控制器会按最后的速度命令继续运行。请设定一个时间，使总线无通信时电机制动。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="106"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
         <source>Baud rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="107"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
         <source>Parity and stop bits:</source>
         <translation>校验位和停止位：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="108"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="109"/>
         <source>Configuration over serial:</source>
         <translation>通过串口配置：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="114"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
         <source>Speed loop PID</source>
         <translation>速度环 PID</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="115"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
         <source>&amp;P coefficient:</source>
         <translation>P 系数(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="116"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
         <source>I coefficient:</source>
         <translation>I 系数：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="117"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
         <source>&amp;D coefficient:</source>
         <translation>D 系数(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="118"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="119"/>
         <source>D period:</source>
         <translation>D 周期：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="120"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
         <source>Preset speed (potentiometer/analog control)</source>
         <translation>预设速度（电位器/模拟量控制）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="121"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
         <source>Preset speed mo&amp;de:</source>
         <translation>预设速度模式(&amp;D)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="122"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
         <source>Trigger:</source>
         <translation>触发：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="123"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
         <source>&amp;Forward speed:</source>
         <translation>正转速度(&amp;F)：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="124"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="125"/>
         <source>Reverse speed:</source>
         <translation>反转速度：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="126"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
         <source>AI1/AI2 as digital ports</source>
         <translation>AI1/AI2 用作数字端口</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="127"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
         <source>AI1 direction:</source>
         <translation>AI1 方向：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="128"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
         <source>AI2 direction:</source>
         <translation>AI2 方向：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="129"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
         <source>AI1 level:</source>
         <translation>AI1 电平：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="130"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="131"/>
         <source>AI2 level:</source>
         <translation>AI2 电平：</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="192"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="191"/>
         <source>Takes effect now, lost at power-off until stored (%1).</source>
         <translation>立即生效，保存（%1）前断电即丢失。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="253"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="252"/>
         <source>Set it anyway?</source>
         <translation>仍要设定吗？</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="269"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="268"/>
         <source>Forward and reverse speed in this mode (%1): %2</source>
         <translation>该模式下的正转和反转速度（%1）：%2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="271"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="270"/>
         <source>The unit and range of the speeds follow the preset speed mode (not read yet).</source>
         <translation>速度的单位和范围取决于预设速度模式（尚未读取）。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="313"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="294"/>
         <source>&lt;b&gt;Written but not stored:&lt;/b&gt; %1. These values act now and are lost when the controller is switched off.</source>
         <translation>&lt;b&gt;已写入但未保存：&lt;/b&gt;%1。这些值立即生效，控制器断电后丢失。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="335"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="316"/>
         <source>%1: the controller writes the values now in effect to its memory and uses them from the next power-up on.
 
 Stored: %2.</source>
@@ -3889,17 +3977,17 @@ Stored: %2.</source>
 已保存：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="346"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="327"/>
         <source>Not written yet, so not stored: %1.</source>
         <translation>尚未写入，因此未保存：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="349"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="330"/>
         <source>%1: done, kept over power-off.</source>
         <translation>%1：完成，断电后保留。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="357"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="338"/>
         <source>The controller replaces its configuration (%1) with the one stored in its memory.
 
 Configuration changes written but not stored are discarded.</source>
@@ -3908,17 +3996,17 @@ Configuration changes written but not stored are discarded.</source>
 已写入但未保存的配置修改将被丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="363"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="344"/>
         <source>Stored configuration reloaded.</source>
         <translation>已重新载入保存的配置。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="371"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="352"/>
         <source>Writing %1 = %2…</source>
         <translation>正在写入 %1 = %2…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/DcControllerPage.cpp" line="381"/>
+        <location filename="../ui/pages/DcControllerPage.cpp" line="362"/>
         <source>%1 = %2 failed: %3</source>
         <translation>%1 = %2 失败：%3</translation>
     </message>
@@ -4051,32 +4139,32 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceInfo</name>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="28"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="59"/>
         <source>not checked</source>
         <translation>未检查</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="30"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="61"/>
         <source>online</source>
         <translation>在线</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="32"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="63"/>
         <source>no answer</source>
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="34"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="65"/>
         <source>garbled replies (duplicate machine number?)</source>
         <translation>应答报文损坏（站号重复？）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="37"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="68"/>
         <source>unknown device</source>
         <translation>未知设备</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceInfo.cpp" line="39"/>
+        <location filename="../model/session/DeviceInfo.cpp" line="70"/>
         <source>answered, identification failed</source>
         <translation>有应答，识别失败</translation>
     </message>
@@ -4084,27 +4172,27 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceMonitor</name>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="60"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="66"/>
         <source>Stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="62"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="68"/>
         <source>Running</source>
         <translation>运行中</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="69"/>
         <source>Running CCW</source>
         <translation>CCW 运行中</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="63"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="69"/>
         <source>Running CW</source>
         <translation>CW 运行中</translation>
     </message>
     <message>
-        <location filename="../model/monitor/DeviceMonitor.cpp" line="206"/>
+        <location filename="../model/monitor/DeviceMonitor.cpp" line="212"/>
         <source>machine number %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
@@ -4112,41 +4200,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="81"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="90"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="83"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="85"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 是命令，不是设定；命令仅在请求时逐条发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="239"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="250"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="262"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="248"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="259"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="271"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="273"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="282"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n 个写入失败：%1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="276"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="285"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>已写入，但未能在所有收到的驱动器上确认：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="279"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="288"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -4263,87 +4351,125 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveLineDialog</name>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="29"/>
         <source>Line format of machine number %1</source>
         <translation>站号 %1 的通信格式</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="28"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="29"/>
         <source>Add drive</source>
         <translation>添加驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="36"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="37"/>
         <source>&amp;Machine number:</source>
         <translation>站号(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="44"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="51"/>
         <source>The port&apos;s (%1)</source>
         <translation>端口的格式（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="56"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="63"/>
         <source>The baud rate and format the drive is set to: requests to it switch the port to it and back between transactions. Type another as 38400 8E1.</source>
         <translation>驱动器设定的波特率和格式：发往它的请求会在两次通信之间把端口切换过去再切换回来。其他格式可输入，例如 38400 8E1。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="59"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="66"/>
         <source>&amp;Line format:</source>
         <translation>通信格式(&amp;L)：</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="67"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="74"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="140"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="147"/>
         <source>Line &amp;format…</source>
         <translation>通信格式(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="145"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="152"/>
         <source>Machine number %1 talks %2, not the port&apos;s %3</source>
         <translation>站号 %1 使用 %2，而不是端口的 %3</translation>
     </message>
     <message>
-        <location filename="../ui/bus/DriveLineDialog.cpp" line="148"/>
+        <location filename="../ui/bus/DriveLineDialog.cpp" line="155"/>
         <source>Machine number %1 talks the port&apos;s %2</source>
         <translation>站号 %1 使用端口的 %2</translation>
     </message>
 </context>
 <context>
+    <name>opentop::DriveName</name>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="18"/>
+        <source>A machine&apos;s name has at most %1 characters; &quot;%2&quot; has %3.</source>
+        <translation>机器名称最多 %1 个字符；“%2”有 %3 个。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="29"/>
+        <source>A machine&apos;s name may not hold control characters or line breaks (U+%1).</source>
+        <translation>机器名称不能包含控制字符或换行（U+%1）。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="37"/>
+        <source>A machine&apos;s name may not hold %1 (a percent sign directly before a digit).</source>
+        <translation>机器名称不能包含 %1（百分号后面紧跟数字）。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="44"/>
+        <source>machine number %1</source>
+        <translation>站号 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="45"/>
+        <source>machine number %1 (%2)</source>
+        <translation>站号 %1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="50"/>
+        <source>Machine number %1</source>
+        <translation>站号 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="51"/>
+        <source>Machine number %1 (%2)</source>
+        <translation>站号 %1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveName.cpp" line="68"/>
+        <source>drive %1 (%2)</source>
+        <translation>驱动器 %1（%2）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DrivePages</name>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="101"/>
+        <location filename="../ui/main/DrivePages.cpp" line="102"/>
         <source>Monitor</source>
         <translation>监视</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="114"/>
+        <location filename="../ui/main/DrivePages.cpp" line="115"/>
         <source>Test run</source>
         <translation>试运行</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="121"/>
-        <source>drive %1 (%2)</source>
-        <translation>驱动器 %1（%2）</translation>
+        <location filename="../ui/main/DrivePages.cpp" line="139"/>
+        <source>%1 — %2, firmware V%3, switches %4</source>
+        <translation>%1 — %2，固件 V%3，开关 %4</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="122"/>
+        <location filename="../ui/main/DrivePages.cpp" line="123"/>
         <source>Speed loop tuning</source>
         <translation>速度环整定</translation>
     </message>
     <message>
-        <location filename="../ui/main/DrivePages.cpp" line="128"/>
+        <location filename="../ui/main/DrivePages.cpp" line="129"/>
         <source>Alarms</source>
         <translation>报警</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/DrivePages.cpp" line="137"/>
-        <source>Machine number %1 (%2, %3) — %4, firmware V%5</source>
-        <translation>站号 %1（%2，%3）— %4，固件 V%5</translation>
     </message>
 </context>
 <context>
@@ -4467,72 +4593,82 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveWorkspace</name>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="33"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="135"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="167"/>
         <source>Write &amp;all pending</source>
         <translation>写入全部待写入项(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="34"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="36"/>
         <source>Revert all</source>
         <translation>全部还原</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="37"/>
         <source>Re-read all</source>
         <translation>全部重新读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="51"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="53"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>写入该驱动器所有页面上的全部待写入修改，并进行校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="84"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="86"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>在总线列表中选择一台驱动器进行设定。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
+        <translation>
+            <numerusform>所有编辑值现已接受。尚未写入任何值：“写入全部待写入值”将发送 %n 个值。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="134"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>写入全部待写入项(&amp;A)（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="156"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="188"/>
         <source>Reading the drive…</source>
         <translation>正在读取驱动器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="158"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="170"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="145"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="208"/>
         <source>Nothing was written: %1</source>
         <translation>未写入任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="183"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="142"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="222"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="231"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>向站号 %1 写入 %n 个待写入值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="193"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="203"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="196"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="236"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
@@ -6056,12 +6192,12 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::ExitCheck</name>
     <message>
-        <location filename="../model/run/ExitCheck.cpp" line="19"/>
+        <location filename="../model/run/ExitCheck.cpp" line="20"/>
         <source>in communication priority (its own inputs cannot start or stop it)</source>
         <translation>处于通信优先级（其自身的输入端子无法启动或停止它）</translation>
     </message>
     <message>
-        <location filename="../model/run/ExitCheck.cpp" line="20"/>
+        <location filename="../model/run/ExitCheck.cpp" line="21"/>
         <source>Machine number %1 (%2): %3</source>
         <translation>站号 %1（%2）：%3</translation>
     </message>
@@ -6627,77 +6763,77 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GroupFollowers</name>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="76"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="78"/>
         <source>could not be read</source>
         <translation>无法读取</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="106"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="109"/>
         <source>its control priority could not be read</source>
         <translation>无法读取其控制优先级</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="108"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="111"/>
         <source>it is in %1: it takes run commands only from its input terminals and ignores them over the bus</source>
         <translation>它处于 %1：只接受输入端子的运行命令，会忽略通过通信发送的运行命令</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="112"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="115"/>
         <source>an alarm is active: it runs only once the alarm is cleared</source>
         <translation>有报警：报警清除后才会运行</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="126"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="129"/>
         <source>error code %1h</source>
         <translation>错误代码 %1h</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="146"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="154"/>
         <source>Machine number %1 follows it.</source>
         <translation>站号 %1 会跟随。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="147"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="155"/>
         <source>Machine number %1 follows it (%2).</source>
         <translation>站号 %1 会跟随（%2）。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="149"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="158"/>
         <source>Machine number %1: not known whether it follows: %2.</source>
         <translation>站号 %1：不确定是否会跟随：%2。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="153"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="160"/>
         <source>Machine number %1 does NOT follow it: %2. To run it with this drive, set its control priority to communication priority; otherwise it shows E2h &quot;Cannot execute command&quot;.</source>
         <translation>站号 %1 不会跟随：%2。若要与此驱动器一起运行，请将其控制优先级设为通信优先级；否则它会显示 E2h“无法执行命令”。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="168"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="174"/>
         <source>Machine number %1: its run state could not be read.</source>
         <translation>站号 %1：无法读取其运行状态。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="170"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="176"/>
         <source>Machine number %1 runs.</source>
         <translation>站号 %1 正在运行。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="171"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
         <source>Machine number %1 runs (%2).</source>
         <translation>站号 %1 正在运行（%2）。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="173"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="179"/>
         <source>Machine number %1 does not run: %2.</source>
         <translation>站号 %1 没有运行：%2。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="175"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="181"/>
         <source>Machine number %1 does not run.</source>
         <translation>站号 %1 没有运行。</translation>
     </message>
     <message>
-        <location filename="../model/run/GroupFollowers.cpp" line="177"/>
+        <location filename="../model/run/GroupFollowers.cpp" line="183"/>
         <source>It shows %1</source>
         <translation>它显示 %1</translation>
     </message>
@@ -7401,112 +7537,112 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>断开连接(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="55"/>
+        <location filename="../ui/main/MainMenus.cpp" line="57"/>
         <source>Communication &amp;groups…</source>
         <translation>通信组(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="59"/>
+        <location filename="../ui/main/MainMenus.cpp" line="62"/>
         <source>&amp;Export alarm histories…</source>
         <translation>导出报警履历(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="61"/>
+        <location filename="../ui/main/MainMenus.cpp" line="64"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="64"/>
+        <location filename="../ui/main/MainMenus.cpp" line="67"/>
         <source>&amp;Files</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="69"/>
+        <location filename="../ui/main/MainMenus.cpp" line="72"/>
         <source>&amp;Drive</source>
         <translation>驱动器(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="72"/>
+        <location filename="../ui/main/MainMenus.cpp" line="75"/>
         <source>&amp;Write all pending</source>
         <translation>写入全部待写入项(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="74"/>
+        <location filename="../ui/main/MainMenus.cpp" line="77"/>
         <source>&amp;Re-read all</source>
         <translation>全部重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="76"/>
+        <location filename="../ui/main/MainMenus.cpp" line="79"/>
         <source>Write a setting to the selected drives…</source>
         <translation>向所选驱动器写入一项设定…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="82"/>
+        <location filename="../ui/main/MainMenus.cpp" line="85"/>
         <source>&amp;Next page</source>
         <translation>下一页(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="88"/>
+        <location filename="../ui/main/MainMenus.cpp" line="91"/>
         <source>&amp;Previous page</source>
         <translation>上一页(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="104"/>
+        <location filename="../ui/main/MainMenus.cpp" line="107"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="110"/>
+        <location filename="../ui/main/MainMenus.cpp" line="113"/>
         <source>&amp;Traffic log</source>
         <translation>报文日志(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="111"/>
+        <location filename="../ui/main/MainMenus.cpp" line="114"/>
         <source>Bus &amp;overview</source>
         <translation>总线总览(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="113"/>
+        <location filename="../ui/main/MainMenus.cpp" line="116"/>
         <source>T&amp;rends</source>
         <translation>趋势(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="114"/>
+        <location filename="../ui/main/MainMenus.cpp" line="117"/>
         <source>Communication &amp;groups</source>
         <translation>通信组(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="128"/>
+        <location filename="../ui/main/MainMenus.cpp" line="130"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="129"/>
+        <location filename="../ui/main/MainMenus.cpp" line="131"/>
         <source>OpenTOP will be in %1 the next time it starts.</source>
         <translation>OpenTOP 下次启动时将以 %1 显示。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="135"/>
+        <location filename="../ui/main/MainMenus.cpp" line="137"/>
         <source>&amp;End of line</source>
         <translation>下线检测(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="137"/>
+        <location filename="../ui/main/MainMenus.cpp" line="139"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="153"/>
+        <location filename="../ui/main/MainMenus.cpp" line="155"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="163"/>
+        <location filename="../ui/main/MainMenus.cpp" line="165"/>
         <source>Export alarm histories</source>
         <translation>导出报警履历</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainMenus.cpp" line="164"/>
+        <location filename="../ui/main/MainMenus.cpp" line="166"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
@@ -7763,37 +7899,37 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorPage</name>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="177"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="191"/>
         <source>Live values</source>
         <translation>实时值</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="185"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="199"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="201"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="215"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="266"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="280"/>
         <source>%1 %2 on the drive&apos;s display</source>
         <translation>驱动器显示屏上为 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="275"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="289"/>
         <source>Alarm %1 %2 — %3</source>
         <translation>报警 %1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="278"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="292"/>
         <source>Alarm active (reading which one…)</source>
         <translation>报警中（正在读取报警内容…）</translation>
     </message>
     <message>
-        <location filename="../ui/monitor/MonitorPage.cpp" line="333"/>
+        <location filename="../ui/monitor/MonitorPage.cpp" line="347"/>
         <source>No live state: %1</source>
         <translation>无实时状态：%1</translation>
     </message>
@@ -7874,12 +8010,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="32"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="33"/>
         <source>Switch to communication priority…</source>
         <translation>切换到通信优先级…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="57"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="58"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -7888,53 +8024,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 切换到“%4”会将这些命令交给总线：输入端子不再能启动或停止电机，设备自身的操作元件也将无效，直到切换回“%2”。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="83"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
         <source>Switch to communication priority</source>
         <translation>切换到通信优先级</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>站号 %1 将通过总线接收运行、停止、方向和速度选择（%2 = &quot;%3&quot;）。之后其输入端子不再能启动或停止电机。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="90"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="91"/>
         <source>Switch</source>
         <translation>切换</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="99"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="100"/>
         <source>Switching to communication priority…</source>
         <translation>正在切换到通信优先级…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="107"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="108"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>站号 %1 现在通过总线接收运动命令。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="110"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>无法切换控制优先级：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="118"/>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="124"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="120"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="126"/>
         <source>Return to I/O priority</source>
         <translation>恢复为 I/O 优先级</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="119"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>站号 %1 将重新通过输入端子接收运行、停止、方向和速度选择，并拒绝来自总线的运动命令。如果输入为运行，电机就会运行。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="129"/>
         <source>Returning to I/O priority…</source>
         <translation>正在恢复为 I/O 优先级…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="136"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="138"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>站号 %1 已重新按输入端子动作。</translation>
     </message>
@@ -7976,32 +8112,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="37"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="38"/>
         <source>&amp;Write to all</source>
         <translation>全部写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="40"/>
         <source>Write one setting to several drives</source>
         <translation>向多台驱动器写入一项设定</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="56"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
         <source>Current value</source>
         <translation>当前值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
@@ -8051,111 +8187,169 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="224"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="226"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>各驱动器的单位不同（%1）；请逐台写入。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="232"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="234"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驱动器 %1（%2）不允许：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="239"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="241"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>驱动器 %1 的通信组不允许：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
         <source>None of the selected drives is identified.</source>
         <translation>所选驱动器均未识别。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="259"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="304"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="261"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="262"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
         <source>Allowed on %1</source>
         <translation>%1 上允许</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="270"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="272"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="271"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="273"/>
         <source>Allowed on %1.</source>
         <translation>%1 上允许。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>仍要在 %n 台驱动器上设置吗？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="322"/>
         <source>&amp;Set it</source>
         <translation>设置(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="336"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>将 %1 写入站号 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="338"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="347"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="343"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="352"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在将 %1 写入 %n 台驱动器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已在 %n 台驱动器中的 %1 台上写入并校验。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="375"/>
         <source>writing…</source>
         <translation>正在写入…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="383"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
         <source>Written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="385"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
         <source>Written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="386"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已写入，未校验（无法回读）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="387"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="396"/>
         <source>Failed: %1</source>
         <translation>失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::NameCommand</name>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="38"/>
+        <source>Name a machine (&quot;Infeed conveyor 3&quot;) or show the names of the bus</source>
+        <translation>为机器命名（“Infeed conveyor 3”）或显示此总线的名称</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="44"/>
+        <source>error: name takes a machine number and one name; put a name with spaces in quotes: name 1 &quot;Infeed conveyor 3&quot;</source>
+        <translation>错误：name 需要一个站号和一个名称；含空格的名称请加引号：name 1 &quot;Infeed conveyor 3&quot;</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="52"/>
+        <source>error: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="62"/>
+        <source>No machine of this bus has a name yet; give one with: name ID &quot;TEXT&quot;</source>
+        <translation>此总线的机器尚无名称；请用以下方式命名：name ID &quot;TEXT&quot;</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <source>name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="77"/>
+        <source>error: &quot;%1&quot; is not a machine number 1–247</source>
+        <translation>错误：“%1”不是 1–247 的站号</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="87"/>
+        <source>Machine number %1 has no name.</source>
+        <translation>站号 %1 没有名称。</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="93"/>
+        <source>error: %1 Nothing was changed.</source>
+        <translation>错误：%1 未更改任何内容。</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="106"/>
+        <source>Machine number %1 has no name now.</source>
+        <translation>站号 %1 现在没有名称。</translation>
+    </message>
+    <message>
+        <location filename="../cli/NameCommand.cpp" line="107"/>
+        <source>%1 is named now; messages, files and scans show it.</source>
+        <translation>%1 已命名；消息、文件和扫描都会显示此名称。</translation>
     </message>
 </context>
 <context>
@@ -8184,87 +8378,87 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::PanelMirror</name>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="19"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="20"/>
         <source>speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="21"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="22"/>
         <source>machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="23"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="24"/>
         <source>running data No.</source>
         <translation>运行数据编号</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="25"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="26"/>
         <source>countdown</source>
         <translation>倒计时</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="27"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="28"/>
         <source>load rate</source>
         <translation>负载率</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="46"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
         <source>Alarm %1 %2</source>
         <translation>报警 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="47"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="48"/>
         <source>Alarm (code not read yet)</source>
         <translation>报警（代码尚未读取）</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="58"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="59"/>
         <source>Current speed %1 %2</source>
         <translation>当前速度 %1 %2</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="62"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="63"/>
         <source>Current speed: no finite value in %1</source>
         <translation>当前速度：%1 中无有限值</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="70"/>
         <source>Current speed %1 r/min</source>
         <translation>当前速度 %1 r/min</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="69"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="70"/>
         <source>Speed not read</source>
         <translation>速度未读取</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="75"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="76"/>
         <source>Machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="83"/>
         <source>Running data SPno%1</source>
         <translation>运行数据 SPno%1</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="89"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="86"/>
         <source>Running data not read</source>
         <translation>运行数据未读取</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="99"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="96"/>
         <source>Countdown set to %1 d %2 h %3 min %4 s (the drive does not report the time left)</source>
         <translation>倒计时设定为 %1 d %2 h %3 min %4 s（驱动器不报告剩余时间）</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="110"/>
         <source>Load rate %1 %</source>
         <translation>负载率 %1 %</translation>
     </message>
     <message>
-        <location filename="../model/monitor/PanelMirror.cpp" line="116"/>
+        <location filename="../model/monitor/PanelMirror.cpp" line="113"/>
         <source>Load rate not read</source>
         <translation>负载率未读取</translation>
     </message>
@@ -8305,27 +8499,27 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterField</name>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="199"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="217"/>
         <source>%1 (not valid now)</source>
         <translation>%1（当前无效）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="228"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="246"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="237"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="255"/>
         <source>Allowed: %1</source>
         <translation>允许：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="240"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="258"/>
         <source>On the drive: %1</source>
         <translation>驱动器中：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterField.cpp" line="274"/>
+        <location filename="../ui/workspace/ParameterField.cpp" line="289"/>
         <source>Not accepted: %1</source>
         <translation>未接受：%1</translation>
     </message>
@@ -8333,112 +8527,112 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="38"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="39"/>
         <source>Parameter initialisation</source>
         <translation>参数初始化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="48"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="49"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>将驱动器 %1 的全部设定恢复为出厂默认值，包括通信设定：之后驱动器可能只在默认波特率下应答，控制优先级也会恢复为输入端子。电机必须处于停止状态。发送前会列出对该驱动器的影响。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="56"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="57"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>初始化驱动器 %1 的全部参数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="59"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>先确认，并列出驱动器及将要改变的内容</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="86"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="87"/>
         <source>Reading what the initialisation would change…</source>
         <translation>正在读取初始化将改变的内容…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="110"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="111"/>
         <source>Afterwards:</source>
         <translation>之后：</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="115"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="116"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>您对该驱动器的 %n 项未写入修改将被放弃。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="119"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>已发送：%1，仅发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>已发送：%1，发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="127"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
         <source>Initialise drive %1</source>
         <translation>初始化驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="125"/>
-        <source>Reset every setting of drive %1 (%2) to its factory defaults?</source>
-        <translation>将驱动器 %1（%2）的全部设定恢复为出厂默认值？</translation>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <source>Reset every setting of %1 to its factory defaults?</source>
+        <translation>要将 %1 的所有设定恢复为出厂默认值吗？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="139"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="142"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>已取消；未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="147"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="150"/>
         <source>Initialising drive %1…</source>
         <translation>正在初始化驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="156"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="159"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>驱动器 %1 未确认初始化：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="157"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
         <source>Nothing was sent: %1</source>
         <translation>未发送任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="173"/>
         <source>&amp;Reconnect at %1 bit/s after the power-up</source>
         <translation>上电后以 %1 bit/s 重新连接(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="177"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>驱动器 %1 已初始化；正在重新读取其值…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="180"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="183"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>驱动器 %1 已初始化；%n 个值无法回读（它现在可能只在默认通信设定下应答）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="187"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>驱动器 %1 已恢复出厂默认值；已重新读取数值。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="210"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="213"/>
         <source>Reconnecting at %1 bit/s in %2 s…</source>
         <translation>%2 s 后以 %1 bit/s 重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="223"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="226"/>
         <source>Reconnect at %1 bit/s from the Bus menu.</source>
         <translation>请从“总线”菜单以 %1 bit/s 重新连接。</translation>
     </message>
@@ -8529,75 +8723,83 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterPage</name>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="24"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="106"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="149"/>
         <source>&amp;Write page</source>
         <translation>写入本页(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="25"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="27"/>
         <source>Re&amp;vert</source>
         <translation>还原(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="26"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="28"/>
         <source>Re-&amp;read</source>
         <translation>重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="46"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
         <source>Write this page&apos;s pending edits to the drive and verify them by reading back</source>
         <translation>将本页的待写入修改写入驱动器，并通过回读校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="47"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="49"/>
         <source>Discard this page&apos;s pending edits</source>
         <translation>放弃本页的待写入修改</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="48"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="50"/>
         <source>Read this page&apos;s values from the drive again (edits stay)</source>
         <translation>重新从驱动器读取本页的值（修改保留）</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/workspace/ParameterPage.cpp" line="137"/>
+        <source>Every field is accepted now. Nothing has been written yet: Write page sends %n value(s).</source>
+        <translation>
+            <numerusform>所有字段现已接受。尚未写入任何值：“写入本页”将发送 %n 个值。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="107"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="150"/>
         <source>&amp;Write page (%1)</source>
         <translation>写入本页(&amp;W)（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="120"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="163"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="124"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="167"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="116"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>未写入任何内容：%n 个字段未被接受。%1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="166"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="208"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>将页面 %1 的 %n 个值写入站号 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="161"/>
-        <location filename="../ui/workspace/ParameterPage.cpp" line="170"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="182"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="203"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="212"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterPage.cpp" line="175"/>
+        <location filename="../ui/workspace/ParameterPage.cpp" line="217"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
@@ -9315,29 +9517,34 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="427"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="431"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="442"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="453"/>
         <source>must be an object</source>
         <translation>必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>name repeated</source>
         <translation>名称重复</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileLoader.cpp" line="464"/>
+        <source>texts: {setting:…} names no parameter (%1)</source>
+        <translation>texts：{setting:…} 指向的参数不存在（%1）</translation>
     </message>
     <message>
         <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
@@ -9348,74 +9555,79 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="78"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="79"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1 大于 %2 MB，即设备描述翻译的上限</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="96"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="97"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>大于 %1 MB，即设备描述翻译的上限</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="101"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="102"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="105"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="106"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="108"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="109"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot; 必须是 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="111"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="112"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot; 必须是 %1</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="117"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="118"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot; 是 &quot;%1&quot;，但设备描述是 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="119"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot; 是 &quot;%1&quot;，应为 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="122"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="123"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot; 必须是 键 → 文本 的对象</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="126"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="127"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot; 必须是非空字符串</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="143"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="144"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>缺少设备描述的 %1 个键：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="147"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="148"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>%1 个键不属于此设备描述：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="155"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="156"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;：面板代码必须与英文相同（%2），实际为（%3）</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="160"/>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="161"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;：占位符必须与英文相同（%2），实际为（%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/i18n/ProfileTranslation.cpp" line="168"/>
+        <source>texts &quot;%1&quot;: the settings named ({setting:…}) must stay as in the English (%2), found (%3)</source>
+        <translation>texts &quot;%1&quot;：引用的设定（{setting:…}）必须与英文相同（%2），实际为（%3）</translation>
     </message>
 </context>
 <context>
@@ -10935,42 +11147,42 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreChoice</name>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Drive in file / setting</source>
         <translation>文件中的驱动器 / 设定</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Value in file</source>
         <translation>文件中的值</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="27"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="28"/>
         <source>Restore to</source>
         <translation>恢复到</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="54"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="55"/>
         <source>(do not restore)</source>
         <translation>（不恢复）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="58"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="59"/>
         <source>Drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="117"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="121"/>
         <source>Two drives of the file would be restored to drive %1.</source>
         <translation>文件中的两台驱动器将恢复到驱动器 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="122"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="126"/>
         <source>Drive %1 is not on the bus (or not identified).</source>
         <translation>驱动器 %1 不在总线上（或未识别）。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreChoice.cpp" line="134"/>
+        <location filename="../ui/files/RestoreChoice.cpp" line="138"/>
         <source>Nothing chosen: tick at least one setting of a drive with a target.</source>
         <translation>未选择任何内容：请为有目标驱动器的驱动器至少勾选一项设定。</translation>
     </message>
@@ -11102,201 +11314,206 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="36"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
         <source>&amp;Preview</source>
         <translation>预览(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Write to drives…</source>
         <translation>写入驱动器(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>&amp;Save report…</source>
         <translation>保存报告(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
         <source>Restore from a backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
         <source>No file chosen</source>
         <translation>未选择文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>&amp;Choose file…</source>
         <translation>选择文件(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="47"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="57"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>读取驱动器并显示将要改变的内容；不写入任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>写入预览的修改，每项都通过回读校验</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>当前写入校验完成后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>将报告保存为文本；文件名以 .csv 结尾时保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="98"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="99"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="103"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="188"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="105"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="170"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒绝，不会写入任何内容：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="109"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="110"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>文件中有 %n 台驱动器。请选择要恢复的内容，然后点击“预览”。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="150"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="137"/>
         <source>Refused, nothing written:</source>
         <translation>已拒绝，未写入任何内容：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="152"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="139"/>
         <source>Drive %1 from %2: %3</source>
         <translation>来自 %2 的驱动器 %1：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="187"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="169"/>
         <source>Choose a backup file first.</source>
         <translation>请先选择备份文件。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <source>Nothing was read or written: %1.</source>
+        <translation>未读取也未写入任何数据：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestoreDialog.cpp" line="220"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
         <source>Reading drive %1…</source>
         <translation>正在读取驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="234"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
         <source>Writing drive %1…</source>
         <translation>正在写入驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="241"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驱动器 %1：%2（%v / %m）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="269"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="260"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>正在等待当前写入校验完成后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="284"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="275"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="361"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="287"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="278"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 项设定待写入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="294"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="297"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="288"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未写入任何内容。点击“写入驱动器”以应用。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="298"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="289"/>
         <source>Nothing written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>Restore from backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="357"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="383"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="364"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>将 %n 项设定写入驱动器 %1，每项都通过回读校验？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
         <source>Write to drives</source>
         <translation>写入驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="388"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="393"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="374"/>
         <source>Save restore report</source>
         <translation>保存恢复报告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="394"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文本 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="399"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -11323,13 +11540,8 @@ No unit can be tested until results can be recorded.</source>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1：无法精确写入该值</translation>
     </message>
-    <message>
-        <location filename="../model/files/RestorePlan.cpp" line="166"/>
-        <source>store commands are always written: what the drive has stored cannot be read back, only what it uses now</source>
-        <translation>保存命令总是会写入：驱动器已保存的内容无法回读，只能读取其当前使用的值</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="177"/>
+        <location filename="../model/files/RestorePlan.cpp" line="173"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>文件中有 %n 个值不能写入该驱动器；未写入任何内容</numerusform>
@@ -11337,81 +11549,96 @@ No unit can be tested until results can be recorded.</source>
     </message>
     <message>
         <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <source>%1 sent after the writes, so that the settings written survive power-off</source>
+        <translation>写入后发送 %1，使写入的设定在断电后仍保留</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="258"/>
+        <source>%1 sent: settings written to this drive earlier (by an interrupted restore, a page or the command line) are not stored yet</source>
+        <translation>已发送 %1：之前写入此驱动器的设定（中断的恢复、页面或命令行）尚未保存</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="262"/>
+        <source>%1 not sent: nothing it stores is written. What a drive has stored cannot be read back: if it loses settings at power-off, switch it off and on and restore again</source>
+        <translation>未发送 %1：没有写入它所保存的设定。驱动器已保存的内容无法读回：如果断电后丢失设定，请断电再上电后重新恢复</translation>
+    </message>
+    <message>
+        <location filename="../model/files/RestorePlan.cpp" line="296"/>
         <source>keep</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="257"/>
+        <location filename="../model/files/RestorePlan.cpp" line="298"/>
         <source>write</source>
         <translation>写入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="259"/>
+        <location filename="../model/files/RestorePlan.cpp" line="300"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="270"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>unchanged</source>
         <translation>未变</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="273"/>
+        <location filename="../model/files/RestorePlan.cpp" line="314"/>
         <source>written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="274"/>
+        <location filename="../model/files/RestorePlan.cpp" line="315"/>
         <source>written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="276"/>
+        <location filename="../model/files/RestorePlan.cpp" line="317"/>
         <source>failed: %1</source>
         <translation>失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="278"/>
+        <location filename="../model/files/RestorePlan.cpp" line="319"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="280"/>
+        <location filename="../model/files/RestorePlan.cpp" line="321"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；请再次执行恢复以回读</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="305"/>
+        <location filename="../model/files/RestorePlan.cpp" line="346"/>
         <source>planned</source>
         <translation>已计划</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="307"/>
+        <location filename="../model/files/RestorePlan.cpp" line="348"/>
         <source>restored</source>
         <translation>已恢复</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="309"/>
+        <location filename="../model/files/RestorePlan.cpp" line="350"/>
         <source>refused</source>
         <translation>已拒绝</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="352"/>
         <source>communication failure</source>
         <translation>通信失败</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="313"/>
+        <location filename="../model/files/RestorePlan.cpp" line="354"/>
         <source>verification mismatch</source>
         <translation>校验不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="356"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
@@ -11419,95 +11646,105 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::RestorePlanTable</name>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>Action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="12"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="14"/>
         <source>File value</source>
         <translation>文件值</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="15"/>
         <source>Drive value before</source>
         <translation>驱动器原值</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestorePlanTable.cpp" line="13"/>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="15"/>
         <source>Result</source>
         <translation>结果</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="93"/>
+        <source>&amp;Differences only</source>
+        <translation>仅显示差异(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/files/RestorePlanTable.cpp" line="95"/>
+        <source>Show only the settings that would be written (or were), and what went wrong</source>
+        <translation>只显示将写入（或已写入）的设定以及出错的项目</translation>
     </message>
 </context>
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="16"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="17"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 项已写入并校验，%2 项未变，%3 项失败，%4 项未尝试</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="22"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="23"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 项未确认</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="25"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已写入 %2 条保存命令中的 %1 条</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 恢复报告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="33"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
         <source>File: %1</source>
         <translation>文件：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>Date: %1 (UTC)</source>
         <translation>日期：%1（UTC）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
         <source>Written to the drives</source>
         <translation>已写入驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="37"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
         <source>Preview only: nothing written</source>
         <translation>仅预览：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="40"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="41"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>来自 %2 的站号 %1：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="51"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="52"/>
         <source>  %1: %2</source>
         <translation>  %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="54"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1：文件 %2，驱动器 %3：%4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="59"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="60"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
@@ -11515,44 +11752,44 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::Restorer</name>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="49"/>
+        <location filename="../model/files/Restorer.cpp" line="51"/>
         <source>interrupted before anything was written</source>
         <translation>在写入任何内容之前已中断</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="64"/>
+        <location filename="../model/files/Restorer.cpp" line="66"/>
         <source>reading the drive failed, nothing written (%1)</source>
         <translation>读取驱动器失败，未写入任何内容（%1）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/Restorer.cpp" line="116"/>
+        <location filename="../model/files/Restorer.cpp" line="119"/>
         <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
         <translation>
             <numerusform>文件中有 %n 个值不可写入通信组的驱动器；未写入任何值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="144"/>
+        <location filename="../model/files/Restorer.cpp" line="147"/>
         <source>interrupted after %1 of %2 writes; run the restore again to complete it</source>
         <translation>在 %2 次写入中的第 %1 次后中断；请再次执行恢复以完成</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="180"/>
+        <location filename="../model/files/Restorer.cpp" line="183"/>
         <source>%1 not confirmed (%2): the drive may or may not hold it; run the restore again, it reads the drive back first</source>
         <translation>%1 未确认（%2）：驱动器可能保存了该值，也可能没有；请再次执行恢复，它会先回读驱动器</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="214"/>
+        <location filename="../model/files/Restorer.cpp" line="217"/>
         <source>after storing, the drive holds %1</source>
         <translation>保存后，驱动器中为 %1</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="219"/>
+        <location filename="../model/files/Restorer.cpp" line="222"/>
         <source>the settings could not be read back after storing</source>
         <translation>保存后无法回读设定</translation>
     </message>
     <message>
-        <location filename="../model/files/Restorer.cpp" line="252"/>
+        <location filename="../model/files/Restorer.cpp" line="255"/>
         <source>communication settings changed (%1): they take effect when the drive is next powered on; connect with the new settings after that</source>
         <translation>通信设定已修改（%1）：驱动器下次上电时生效；之后请用新设定连接</translation>
     </message>
@@ -12045,68 +12282,79 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunLiveState</name>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="24"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="26"/>
         <source>The drive now</source>
         <translation>驱动器当前状态</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="47"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="49"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="51"/>
         <source>Alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="86"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="58"/>
+        <source>Running data</source>
+        <translation>运行数据</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/RunLiveState.cpp" line="95"/>
         <source>%1:</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="124"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="133"/>
         <source>%1 (%2 %3)</source>
         <translation>%1（%2 %3）</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="126"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="135"/>
         <source>not reported</source>
         <translation>未报告</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="129"/>
-        <location filename="../ui/run/RunLiveState.cpp" line="139"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="143"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="146"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="156"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="131"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="143"/>
+        <source>SPno%1</source>
+        <translation>SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/RunLiveState.cpp" line="148"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="134"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="151"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="136"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="153"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="172"/>
         <source>waiting for the first answer…</source>
         <translation>正在等待首次应答…</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="155"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="172"/>
         <source>not watched</source>
         <translation>未监视</translation>
     </message>
     <message>
-        <location filename="../ui/run/RunLiveState.cpp" line="161"/>
+        <location filename="../ui/run/RunLiveState.cpp" line="178"/>
         <source>Not live: %1</source>
         <translation>非实时：%1</translation>
     </message>
@@ -12114,12 +12362,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="56"/>
+        <location filename="../model/run/RunningData.cpp" line="76"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1 在 %3 s 内从 %2 r/min 减速：手册要求从高速（约 %5 r/min 及以上）减速时，减速时间应大于 %4 s。</translation>
     </message>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="124"/>
+        <location filename="../model/run/RunningData.cpp" line="144"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1 从高速减速过快（%3 s 内从 %2 r/min 减速）：手册要求从高速（约 %5 r/min 及以上）减速时，减速时间应大于 %4 s。</translation>
     </message>
@@ -12127,153 +12375,154 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningDataPage</name>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="39"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="40"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Running data</source>
         <translation>运行数据</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Speed (r/min)</source>
         <translation>速度 (r/min)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="54"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
         <source>Acceleration (s)</source>
         <translation>加速时间 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="56"/>
         <source>Deceleration (s)</source>
         <translation>减速时间 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="55"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="56"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="68"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="69"/>
         <source>SPno%1</source>
         <translation>SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="71"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="72"/>
         <source>Selected by the inputs M0 = %1, M1 = %2, M2 = %3 or by the running data selection command</source>
         <translation>由输入 M0 = %1、M1 = %2、M2 = %3 或运行数据选择命令选择</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="89"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="95"/>
         <source>SS trimmer</source>
         <translation>SS 调节器</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="90"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="96"/>
         <source>SPno1 has no acceleration register: the SS trimmer on the drive sets it (0.5–30 s); it is not stored in the drive</source>
         <translation>SPno1 没有加速时间寄存器：由驱动器上的 SS 调节器设定（0.5–30 s）；不保存在驱动器中</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="93"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
         <source>SD trimmer</source>
         <translation>SD 调节器</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="94"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="100"/>
         <source>SPno1 has no deceleration register: the SD trimmer on the drive sets it (0.5 s or 2–30 s); it is not stored in the drive</source>
         <translation>SPno1 没有减速时间寄存器：由驱动器上的 SD 调节器设定（0.5 s 或 2–30 s）；不保存在驱动器中</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="98"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="104"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="99"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="105"/>
         <source>This drive has no register for this value</source>
         <translation>该驱动器没有此值的寄存器</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="106"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="112"/>
         <source>Initialize</source>
         <translation>初始化</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="108"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="114"/>
         <source>Reset SPno%1 on the drive to its factory defaults</source>
         <translation>将驱动器上的 SPno%1 恢复为出厂默认值</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="109"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="274"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="280"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="115"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="315"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="321"/>
         <source>Initialize SPno%1</source>
         <translation>初始化 SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="130"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="145"/>
         <source>SPno1 runs at the speed of the external speed-setting VR (CN3) with the SS/SD trimmer times; it is not stored in the drive</source>
         <translation>SPno1 按外部调速电位器 VR（CN3）的速度运行，使用 SS/SD 调节器的时间；不保存在驱动器中</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="214"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="255"/>
         <source>Allowed speed on this %1: %2 (0 stops the motor)</source>
         <translation>该 %1 允许的速度：%2（0 使电机停止）</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="224"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="168"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="265"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="227"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="268"/>
         <source>Allowed speed: %1</source>
         <translation>允许的速度：%1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="228"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
         <source>The drive&apos;s variant is not known, so a speed must suit every variant (0 stops the motor): %1</source>
         <translation>驱动器机型未知，因此速度必须适用于所有机型（0 使电机停止）：%1</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="240"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="281"/>
         <source>its factory default</source>
         <translation>其出厂默认值</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="262"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="303"/>
         <source>The SPno1 speed and times come from the external VR and the SS/SD trimmers; they do not change.</source>
         <translation>SPno1 的速度和时间来自外部 VR 和 SS/SD 调节器；不会改变。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="269"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="310"/>
         <source>Your unwritten edits in this row are discarded.</source>
         <translation>该行中未写入的修改将被放弃。</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="275"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="316"/>
         <source>Reset running data SPno%1 of drive %2 to these factory defaults?</source>
         <translation>将驱动器 %2 的运行数据 SPno%1 恢复为以下出厂默认值？</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="286"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="327"/>
         <source>Initializing SPno%1…</source>
         <translation>正在初始化 SPno%1…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="301"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="342"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 未初始化：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="358"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 已初始化；%n 个值无法回读</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="319"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="360"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 已恢复为出厂默认值</translation>
     </message>
@@ -12281,93 +12530,93 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="64"/>
+        <location filename="../cli/ScanCommand.cpp" line="65"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>查找并识别总线上的驱动器（站号 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="70"/>
+        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>询问的起始站号，1–247（默认 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="70"/>
         <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>询问的结束站号，1–247（默认 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="73"/>
+        <location filename="../cli/ScanCommand.cpp" line="74"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每个站号的等待时间（ms），10–5000（默认：根据波特率得出；适配器或网关较慢时请加大）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="75"/>
+        <location filename="../cli/ScanCommand.cpp" line="76"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="77"/>
+        <location filename="../cli/ScanCommand.cpp" line="78"/>
         <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
         <translation>对没有找到的站号，也以驱动器可设定的其他每种通信格式询问（8N1 的 DBU 总线上 8E1 的 DC 控制器）：每种格式多扫描一轮，默认关闭。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="92"/>
+        <location filename="../cli/ScanCommand.cpp" line="93"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>错误：--%1 必须是 %2–%3 的数字，而不是 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="104"/>
+        <location filename="../cli/ScanCommand.cpp" line="105"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>错误：scan 不接受参数；请使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="113"/>
+        <location filename="../cli/ScanCommand.cpp" line="114"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>错误：--from %1 大于 --to %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="131"/>
+        <location filename="../cli/ScanCommand.cpp" line="132"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="178"/>
+        <location filename="../cli/ScanCommand.cpp" line="179"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在扫描任何站号之前已中断。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="180"/>
+        <location filename="../cli/ScanCommand.cpp" line="181"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中断：已扫描站号 %1–%2（%4 个中的 %3 个）；%5–%6 未询问。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="194"/>
+        <location filename="../cli/ScanCommand.cpp" line="195"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>错误：扫描在站号 %1 处停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="206"/>
+        <location filename="../cli/ScanCommand.cpp" line="207"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="208"/>
+        <location filename="../cli/ScanCommand.cpp" line="209"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驱动器在 %2 ms 等待时间之后才应答，已重新询问；如果扫描漏掉驱动器，请加大 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="217"/>
+        <location filename="../cli/ScanCommand.cpp" line="218"/>
         <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
         <translation>警告：站号 %1 有应答，但识别失败，再询问 %2 次仍然如此；它不计为驱动器。请手动添加：在命令中指定这个站号（届时会在 --timeout 内重新识别；设备应答慢时请加大），或检查它的通信设定后用更长的 --wait 重新扫描。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="226"/>
+        <location filename="../cli/ScanCommand.cpp" line="227"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -12378,109 +12627,117 @@ This moves or stops a motor: add --yes to send it.</source>
   - 终端电阻（总线两端各 120 Ω），以及驱动器是否已通电。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="239"/>
+        <location filename="../cli/ScanCommand.cpp" line="240"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>提示：%1 请使用相同连接并加上以下选项重试：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="252"/>
+        <location filename="../cli/ScanCommand.cpp" line="253"/>
         <source>Serial line: %1</source>
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="255"/>
+        <location filename="../cli/ScanCommand.cpp" line="256"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告：%1 因此扫描时每个站号最多会多等待 %2 ms。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="284"/>
-        <source>%1 — variant unknown</source>
-        <translation>%1 — 机型未知</translation>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <source>warning: machine number %1 (%2) answers with garbled replies: two drives probably have the same machine number. Check the address switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
+        <translation>警告：站号 %1（%2）的应答损坏：可能有两台驱动器使用相同的站号。请检查此总线上各驱动器的地址开关，为每台驱动器设定各自的站号，断电再上电后重新扫描。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="285"/>
-        <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
-        <translation>驱动器未报告其机型；请用 --variant %1=VARIANT 指定（%2）</translation>
-    </message>
-    <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>switches</source>
         <translation>开关</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="302"/>
+        <location filename="../cli/ScanCommand.cpp" line="267"/>
         <source>state</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="308"/>
+        <location filename="../cli/ScanCommand.cpp" line="273"/>
+        <source>name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="279"/>
         <source>comm. group</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="313"/>
+        <location filename="../cli/ScanCommand.cpp" line="284"/>
         <source>line format</source>
         <translation>通信格式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="328"/>
+        <location filename="../cli/ScanCommand.cpp" line="301"/>
         <source>the port&apos;s</source>
         <translation>端口的</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="387"/>
+        <location filename="../cli/ScanCommand.cpp" line="361"/>
         <source>1 drive found in %1 s</source>
         <translation>在 %1 s 内找到 1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="388"/>
+        <location filename="../cli/ScanCommand.cpp" line="362"/>
         <source>%1 drives found in %2 s</source>
         <translation>在 %2 s 内找到 %1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="390"/>
+        <location filename="../cli/ScanCommand.cpp" line="364"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 个可能重复的站号：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="392"/>
+        <location filename="../cli/ScanCommand.cpp" line="366"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 个可能重复的站号：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="396"/>
+        <location filename="../cli/ScanCommand.cpp" line="370"/>
         <source>; answered, identification failed: %1 (add by hand)</source>
         <translation>；有应答但识别失败：%1（请手动添加）</translation>
     </message>
+</context>
+<context>
+    <name>opentop::ScanDrives</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="406"/>
-        <source>warning: machine number %1 (%2, %3) answers with garbled replies: two drives probably have the same machine number. Check the SW1/SW2 switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
-        <translation>警告：站号 %1（%2，%3）的应答报文损坏：可能有两台驱动器设为同一站号。请检查该总线上各驱动器的 SW1/SW2 开关，为每台驱动器设定不同的站号，断电后重新上电，再次扫描。</translation>
+        <location filename="../cli/ScanDrives.cpp" line="43"/>
+        <source>%1 — variant unknown</source>
+        <translation>%1 — 机型未知</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanDrives.cpp" line="44"/>
+        <source>the drive does not report its variant; give it with --variant %1=VARIANT (%2)</source>
+        <translation>驱动器未报告其机型；请用 --variant %1=VARIANT 指定（%2）</translation>
     </message>
 </context>
 <context>
@@ -12858,47 +13115,47 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ShortcutsDialog</name>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="60"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
         <source>Main window</source>
         <translation>主窗口</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="62"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="36"/>
         <source>Everywhere, dialogs included</source>
         <translation>所有位置，包括对话框</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="63"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="37"/>
         <source>STOP ALL (stop every drive on the bus)</source>
         <translation>全部停止（停止总线上的所有驱动器）</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="72"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="73"/>
         <source>Keyboard shortcuts</source>
         <translation>键盘快捷键</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Where</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Command</source>
         <translation>命令</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="76"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="77"/>
         <source>Keys</source>
         <translation>按键</translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="86"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="87"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../ui/help/ShortcutsDialog.cpp" line="95"/>
+        <location filename="../ui/help/ShortcutsDialog.cpp" line="96"/>
         <source>STOP ALL&apos;s keys work in every window of the program, also while a dialog is open.</source>
         <translation>“全部停止”的快捷键在程序的任何窗口中都有效，打开对话框时也有效。</translation>
     </message>
@@ -13647,9 +13904,19 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::SpnoSelector</name>
     <message>
-        <location filename="../ui/run/SpnoSelector.cpp" line="62"/>
+        <location filename="../ui/run/SpnoSelector.cpp" line="29"/>
+        <source>The running data that Select running data sends; &quot;The drive now&quot; shows the running data the drive runs</source>
+        <translation>“选择运行数据”发送的运行数据；“驱动器当前状态”显示驱动器正在运行的运行数据</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/SpnoSelector.cpp" line="70"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/SpnoSelector.cpp" line="84"/>
+        <source>The running data that Select running data sends. The drive reported SPno%1 at %2; &quot;The drive now&quot; shows what it runs now.</source>
+        <translation>“选择运行数据”发送的运行数据。驱动器在 %2 报告为 SPno%1；“驱动器当前状态”显示其当前运行的数据。</translation>
     </message>
 </context>
 <context>
@@ -13668,77 +13935,77 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StartPreview</name>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="110"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="107"/>
+        <location filename="../model/run/StartPreview.cpp" line="110"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="149"/>
+        <location filename="../model/run/StartPreview.cpp" line="154"/>
         <source>communication group of %1</source>
         <translation>%1 的通信组</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="177"/>
+        <location filename="../model/run/StartPreview.cpp" line="182"/>
         <source>It runs with running data SPno%1</source>
         <translation>以运行数据 SPno%1 运行</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="179"/>
+        <location filename="../model/run/StartPreview.cpp" line="184"/>
         <source> at %1</source>
         <translation> （%1）</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="182"/>
+        <location filename="../model/run/StartPreview.cpp" line="187"/>
         <source>, direction %1 (the direction command sent since)</source>
         <translation>，方向 %1（此后已发送方向命令）</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="183"/>
+        <location filename="../model/run/StartPreview.cpp" line="188"/>
         <source>, direction %1</source>
         <translation>，方向 %1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="186"/>
+        <location filename="../model/run/StartPreview.cpp" line="191"/>
         <source>Which running data it runs with could not be read.</source>
         <translation>无法读取以哪组运行数据运行。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="189"/>
+        <location filename="../model/run/StartPreview.cpp" line="194"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="191"/>
+        <location filename="../model/run/StartPreview.cpp" line="196"/>
         <source>The start also reaches machine number(s) %1: %2.</source>
         <translation>启动也会作用于站号 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="195"/>
+        <location filename="../model/run/StartPreview.cpp" line="202"/>
         <source>Not read: %1.</source>
         <translation>未读取：%1。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="207"/>
+        <location filename="../model/run/StartPreview.cpp" line="219"/>
         <source>This starts the motor of machine number %1.</source>
         <translation>这将启动站号 %1 的电机。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="209"/>
+        <location filename="../model/run/StartPreview.cpp" line="221"/>
         <source>This sets the speed command of machine number %1 to %2: its motor runs.</source>
         <translation>这将把站号 %1 的速度命令设定为 %2：其电机将运行。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="213"/>
+        <location filename="../model/run/StartPreview.cpp" line="225"/>
         <source>Make sure that nobody is near the machine and that it may move. STOP ALL stops every drive at any time.</source>
         <translation>请确认设备附近无人且设备可以运动。“全部停止”可随时停止所有驱动器。</translation>
     </message>
     <message>
-        <location filename="../model/run/StartPreview.cpp" line="216"/>
+        <location filename="../model/run/StartPreview.cpp" line="228"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>程序运行期间，每台驱动器只询问一次。</translation>
     </message>
@@ -13841,37 +14108,37 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>已向所有驱动器发送停止。总线上没有已知的驱动器，因此未检查任何驱动器；请扫描总线以便进行检查。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="96"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="97"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>站号 %1：%2 s 后停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="99"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="100"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>站号 %1：仍在运行（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="102"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>站号 %1：无应答，未确认已停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全部停止：停止广播失败</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全部停止：已发送停止，未检查驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全部停止：所有驱动器已停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="121"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全部停止：并非所有驱动器都已确认停止</translation>
     </message>
@@ -14046,92 +14313,97 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::TestRunPanel</name>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="45"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="48"/>
         <source>&lt;b&gt;Test run of machine number %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;站号 %1 的试运行&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="50"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="53"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>站号 %1 尚未识别为已知系列的驱动器；试运行需要已识别的驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="31"/>
         <source>&amp;Start</source>
         <translation>启动(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="120"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="32"/>
         <source>S&amp;top</source>
         <translation>停止(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="33"/>
         <source>&amp;CW</source>
         <translation>CW(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="121"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="34"/>
         <source>CC&amp;W</source>
         <translation>CCW(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="35"/>
         <source>&amp;Hold</source>
         <translation>保持(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="122"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="36"/>
         <source>&amp;Free</source>
         <translation>释放(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="141"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="54"/>
         <source>Se&amp;lect running data</source>
         <translation>选择运行数据(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="152"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="67"/>
         <source>Return to &amp;I/O priority</source>
         <translation>恢复为 I/O 优先级(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="154"/>
+        <location filename="../ui/run/DbuRunCommands.cpp" line="69"/>
         <source>Give run, stop, direction and speed selection back to the drive&apos;s input terminals</source>
         <translation>将运行、停止、方向和速度选择交还给驱动器的输入端子</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="200"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="160"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>无法读取 %1 以确认驱动器是否接受运动命令：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="236"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="196"/>
+        <source>Not started: the variant of %1 was not given.</source>
+        <translation>未启动：未指定 %1 的机型。</translation>
+    </message>
+    <message>
+        <location filename="../ui/run/TestRunPanel.cpp" line="203"/>
         <source>Reading what the start will run…</source>
         <translation>正在读取启动后将运行的内容…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="252"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="219"/>
         <source>Start the motor</source>
         <translation>启动电机</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="266"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="233"/>
         <source>Sending %1…</source>
         <translation>正在发送 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="295"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="262"/>
         <source>Not every drive of its communication group runs: see below.</source>
         <translation>通信组中并非所有驱动器都在运行：见下方。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="313"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="280"/>
         <source>Sent: %1</source>
         <translation>已发送：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="382"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="349"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>轮询已暂停：控制器在收到最后一帧报文 %1 s 后会使电机制动（%2）。请恢复轮询以保持电机运行。</translation>
     </message>
@@ -15106,23 +15378,23 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendChart</name>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="32"/>
-        <location filename="../ui/trends/TrendChart.cpp" line="58"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="33"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="59"/>
         <source>Time (hh:mm:ss)</source>
         <translation>时间 (hh:mm:ss)</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="105"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="109"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="296"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="300"/>
         <source>There is no trend data to export yet.</source>
         <translation>尚无可导出的趋势数据。</translation>
     </message>
     <message>
-        <location filename="../ui/trends/TrendChart.cpp" line="309"/>
+        <location filename="../ui/trends/TrendChart.cpp" line="313"/>
         <source>Cannot write the picture %1.</source>
         <translation>无法写入图片 %1。</translation>
     </message>
@@ -16463,6 +16735,77 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/profile/ValueCodec.cpp" line="489"/>
         <source>unknown code %1</source>
         <translation>未知代码 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantNeed</name>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="19"/>
+        <source>%1 and %2 more</source>
+        <translation>%1 及另外 %2 项</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="69"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="77"/>
+        <source>Allowed %1 — %2</source>
+        <translation>允许值 %1 — %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="94"/>
+        <source>The allowed values of the settings you are changing depend on it.</source>
+        <translation>您正在更改的设定，其允许值取决于机型。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="97"/>
+        <source>The backup file records it, and a restore checks the values against it.</source>
+        <translation>备份文件会记录机型，恢复时会按机型检查数值。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="100"/>
+        <source>The speeds the motor may run at depend on it.</source>
+        <translation>电机允许的运行速度取决于机型。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="104"/>
+        <source>Which drive is %1? It reports only &quot;%2&quot;, not whether it is a %3.</source>
+        <translation>%1 是哪种驱动器？它只报告“%2”，不报告是否为 %3。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="105"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="108"/>
+        <source>Read it on the drive&apos;s rating plate. It is kept for this bus and asked once; without it every value must suit all of them.</source>
+        <translation>请查看驱动器的铭牌。此设定会保存在此总线中，只询问一次；若不指定，每个值都必须符合所有机型。</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/VariantNeed.cpp" line="112"/>
+        <source>Last time on this bus it was set as %1.</source>
+        <translation>上次在此总线上设为 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantQuestion</name>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="29"/>
+        <source>Which drive is it?</source>
+        <translation>这是哪种驱动器？</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="41"/>
+        <source>Not known: check against every variant</source>
+        <translation>不确定：按所有机型检查</translation>
+    </message>
+    <message>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
+        <source>the variant of %1 was not given</source>
+        <translation>未指定 %1 的机型</translation>
     </message>
 </context>
 <context>

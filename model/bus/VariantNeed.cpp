@@ -16,7 +16,7 @@ QString someLabels(const QStringList& labels)
 {
     if (labels.size() <= 2)
         return labels.join(QStringLiteral(", "));
-    return VariantNeed::tr("%1 and %n more", nullptr, int(labels.size()) - 1).arg(labels.first());
+    return VariantNeed::tr("%1 and %2 more").arg(labels.first()).arg(labels.size() - 1);
 }
 
 } // namespace

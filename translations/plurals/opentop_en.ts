@@ -15,7 +15,7 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message numerus="yes">
-        <location filename="../../ui/alarms/AlarmExport.cpp" line="126"/>
+        <location filename="../../ui/alarms/AlarmExport.cpp" line="128"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>%n record of %1 drive(s) written to %2.</numerusform>
@@ -26,7 +26,7 @@
 <context>
     <name>opentop::BackupDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="94"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="102"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>Reading the settings of %n drive…</numerusform>
@@ -34,7 +34,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="160"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n setting read in %1 ms</numerusform>
@@ -42,7 +42,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="188"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="196"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>Save the %n drive that was read?</numerusform>
@@ -50,7 +50,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="212"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="220"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>Saved %n drive to %1.</numerusform>
@@ -72,7 +72,7 @@
 <context>
     <name>opentop::BusPanel</name>
     <message numerus="yes">
-        <location filename="../../ui/bus/BusPanel.cpp" line="244"/>
+        <location filename="../../ui/bus/BusPanel.cpp" line="271"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive found.</numerusform>
@@ -80,7 +80,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/bus/BusPanel.cpp" line="252"/>
+        <location filename="../../ui/bus/BusPanel.cpp" line="279"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>%n drive found on machine numbers %1–%2 in %3 s.</numerusform>
@@ -91,7 +91,7 @@
 <context>
     <name>opentop::CompareDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/CompareDialog.cpp" line="247"/>
+        <location filename="../../ui/files/CompareDialog.cpp" line="255"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -102,7 +102,7 @@
 <context>
     <name>opentop::DeviceParameters</name>
     <message numerus="yes">
-        <location filename="../../model/session/DeviceParameters.cpp" line="273"/>
+        <location filename="../../model/session/DeviceParameters.cpp" line="282"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n write failed: %1</numerusform>
@@ -110,7 +110,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/session/DeviceParameters.cpp" line="279"/>
+        <location filename="../../model/session/DeviceParameters.cpp" line="288"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n value written and verified</numerusform>
@@ -140,7 +140,15 @@
 <context>
     <name>opentop::DriveWorkspace</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="158"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
+        <translation>
+            <numerusform>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value.</numerusform>
+            <numerusform>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n values.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n value could not be read</numerusform>
@@ -148,7 +156,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="191"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="231"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>Write %n pending value to machine number %1</numerusform>
@@ -156,7 +164,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="196"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="236"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>Writing %n value…</numerusform>
@@ -292,7 +300,7 @@
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="312"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>Set it on %n drive anyway?</numerusform>
@@ -300,7 +308,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>Writing %1 to %n drive…</numerusform>
@@ -308,7 +316,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="357"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>Written and verified on %1 of %n drive.</numerusform>
@@ -319,7 +327,7 @@
 <context>
     <name>opentop::ParameterInitBox</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="115"/>
+        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="116"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>Your %n unwritten edit of this drive is discarded.</numerusform>
@@ -327,7 +335,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="180"/>
+        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="183"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>Drive %1 initialised; %n value could not be read back (it may answer only at the default communication settings now).</numerusform>
@@ -338,7 +346,7 @@
 <context>
     <name>opentop::ParameterPage</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterPage.cpp" line="124"/>
+        <location filename="../../ui/workspace/ParameterPage.cpp" line="167"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n value could not be read</numerusform>
@@ -346,7 +354,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterPage.cpp" line="143"/>
+        <location filename="../../ui/workspace/ParameterPage.cpp" line="116"/>
         <source>Nothing was written: %n field(s) not accepted. %1</source>
         <translation>
             <numerusform>Nothing was written: %n field not accepted. %1</numerusform>
@@ -354,7 +362,15 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterPage.cpp" line="166"/>
+        <location filename="../../ui/workspace/ParameterPage.cpp" line="137"/>
+        <source>Every field is accepted now. Nothing has been written yet: Write page sends %n value(s).</source>
+        <translation>
+            <numerusform>Every field is accepted now. Nothing has been written yet: Write page sends %n value.</numerusform>
+            <numerusform>Every field is accepted now. Nothing has been written yet: Write page sends %n values.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../ui/workspace/ParameterPage.cpp" line="208"/>
         <source>Write %n value(s) of the page %1 to machine number %2</source>
         <translation>
             <numerusform>Write %n value of the page %1 to machine number %2</numerusform>
@@ -362,7 +378,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterPage.cpp" line="175"/>
+        <location filename="../../ui/workspace/ParameterPage.cpp" line="217"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>Writing %n value…</numerusform>
@@ -414,7 +430,7 @@
 <context>
     <name>opentop::RestoreDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="109"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="110"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>%n drive in the file. Choose what to restore, then Preview.</numerusform>
@@ -422,7 +438,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="287"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="278"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n setting to write</numerusform>
@@ -430,7 +446,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="383"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="364"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>Write %n setting to drive(s) %1, each verified by reading it back?</numerusform>
@@ -441,7 +457,7 @@
 <context>
     <name>opentop::RestorePlan</name>
     <message numerus="yes">
-        <location filename="../../model/files/RestorePlan.cpp" line="177"/>
+        <location filename="../../model/files/RestorePlan.cpp" line="173"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>%n value of the file may not be written to this drive; nothing written</numerusform>
@@ -452,7 +468,7 @@
 <context>
     <name>opentop::Restorer</name>
     <message numerus="yes">
-        <location filename="../../model/files/Restorer.cpp" line="116"/>
+        <location filename="../../model/files/Restorer.cpp" line="119"/>
         <source>%n value(s) of the file may not be written to the drives of the communication group; nothing written</source>
         <translation>
             <numerusform>%n value of the file may not be written to the drives of the communication group; nothing written</numerusform>
@@ -482,7 +498,7 @@
 <context>
     <name>opentop::RunningDataPage</name>
     <message numerus="yes">
-        <location filename="../../ui/pages/RunningDataPage.cpp" line="317"/>
+        <location filename="../../ui/pages/RunningDataPage.cpp" line="358"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 initialized; %n value could not be read back</numerusform>
