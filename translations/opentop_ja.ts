@@ -5818,47 +5818,52 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="126"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="126"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="130"/>
+        <location filename="../model/eol/EolStation.cpp" line="133"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="134"/>
+        <location filename="../model/eol/EolStation.cpp" line="137"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="139"/>
+        <location filename="../model/eol/EolStation.cpp" line="142"/>
+        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
+        <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="149"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="140"/>
+        <location filename="../model/eol/EolStation.cpp" line="150"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="145"/>
+        <location filename="../model/eol/EolStation.cpp" line="155"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="149"/>
+        <location filename="../model/eol/EolStation.cpp" line="159"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="177"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
@@ -9296,87 +9301,87 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="73"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="74"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
         <source>Operator:</source>
         <translation>作業者:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="86"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="152"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="155"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="185"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="183"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="186"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9385,127 +9390,147 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="202"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="203"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="206"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="219"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>試験 %1 · 合格 %2 · 不合格 %3 · 直行率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="264"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="273"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="151"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <source>%1, NOT RECORDED</source>
+        <translation>%1、未記録</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <source>NOT RECORDED</source>
+        <translation>未記録</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <source>Unit %1 ended %2, but its result is not in the results database: %3
+Nothing is tested until it is recorded. The station tries again by itself (next in %4 s); keep the unit aside.</source>
+        <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
+記録されるまで試験しません。ステーションが自動で再試行します（%4 秒後）。この製品は別に置いてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <source>%1
+Recorded at %2, after the results database came back.</source>
+        <translation>%1
+結果データベースの復旧後、%2 に記録しました。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="377"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
-        <source>NOT RECORDED: %1</source>
-        <translation>未記録: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="376"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="383"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="326"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11892,8 +11917,8 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultWriter</name>
     <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="138"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="151"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="171"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="189"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>

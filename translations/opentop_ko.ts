@@ -5818,47 +5818,52 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="126"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="126"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="130"/>
+        <location filename="../model/eol/EolStation.cpp" line="133"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="134"/>
+        <location filename="../model/eol/EolStation.cpp" line="137"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="139"/>
+        <location filename="../model/eol/EolStation.cpp" line="142"/>
+        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
+        <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="149"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="140"/>
+        <location filename="../model/eol/EolStation.cpp" line="150"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="145"/>
+        <location filename="../model/eol/EolStation.cpp" line="155"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="149"/>
+        <location filename="../model/eol/EolStation.cpp" line="159"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="177"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
@@ -9296,87 +9301,87 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="73"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="74"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
         <source>Operator:</source>
         <translation>작업자:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="86"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="152"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="155"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
         <source>READY</source>
         <translation>준비 완료</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="185"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="183"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="186"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9385,127 +9390,147 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="202"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="203"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="206"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="219"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>검사 %1 · 합격 %2 · 불합격 %3 · 직행률 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="264"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="273"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="151"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <source>%1, NOT RECORDED</source>
+        <translation>%1, 기록 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <source>NOT RECORDED</source>
+        <translation>기록 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <source>Unit %1 ended %2, but its result is not in the results database: %3
+Nothing is tested until it is recorded. The station tries again by itself (next in %4 s); keep the unit aside.</source>
+        <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
+기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%4초 후). 이 제품은 따로 두십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <source>%1
+Recorded at %2, after the results database came back.</source>
+        <translation>%1
+결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="377"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
-        <source>NOT RECORDED: %1</source>
-        <translation>기록 안 됨: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="376"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="383"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="326"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11892,8 +11917,8 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultWriter</name>
     <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="138"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="151"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="171"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="189"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>

@@ -5818,47 +5818,52 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="126"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="123"/>
+        <location filename="../model/eol/EolStation.cpp" line="126"/>
         <source>opening the results database</source>
         <translation>正在開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="130"/>
+        <location filename="../model/eol/EolStation.cpp" line="133"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="134"/>
+        <location filename="../model/eol/EolStation.cpp" line="137"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="139"/>
+        <location filename="../model/eol/EolStation.cpp" line="142"/>
+        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
+        <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="149"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在開啟結果資料庫；請稍後再試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="140"/>
+        <location filename="../model/eol/EolStation.cpp" line="150"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="145"/>
+        <location filename="../model/eol/EolStation.cpp" line="155"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="149"/>
+        <location filename="../model/eol/EolStation.cpp" line="159"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="177"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
@@ -9296,87 +9301,87 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="73"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="74"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
         <source>Operator:</source>
         <translation>作業員：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="86"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="103"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="110"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="152"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="155"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
         <source>READY</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="185"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="183"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="186"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9385,127 +9390,147 @@ No unit can be tested until results can be recorded.</source>
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="202"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="208"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="203"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="206"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="215"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="219"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已測試 %1 · 合格 %2 · 不合格 %3 · 一次良率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="264"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="273"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
         <source>TESTING</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="151"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <source>%1, NOT RECORDED</source>
+        <translation>%1，未記錄</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <source>NOT RECORDED</source>
+        <translation>未記錄</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <source>Unit %1 ended %2, but its result is not in the results database: %3
+Nothing is tested until it is recorded. The station tries again by itself (next in %4 s); keep the unit aside.</source>
+        <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
+記錄完成前不會進行任何測試。工作站會自動重試（%4 秒後）；請將此產品放在一旁。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <source>%1
+Recorded at %2, after the results database came back.</source>
+        <translation>%1
+結果資料庫恢復後，已於 %2 記錄。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="377"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
-        <source>NOT RECORDED: %1</source>
-        <translation>未記錄：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="376"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="318"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="383"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="326"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11892,8 +11917,8 @@ No unit can be tested until results can be recorded.</source>
 <context>
     <name>opentop::ResultWriter</name>
     <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="138"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="151"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="171"/>
+        <location filename="../model/eol/ResultWriter.cpp" line="189"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>

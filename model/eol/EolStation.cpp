@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QSysInfo>
+#include <algorithm>
 
 namespace opentop {
 
@@ -24,6 +25,8 @@ EolStation::EolStation(QObject* parent)
     , m_writer(std::make_unique<ResultWriter>())
     , m_station(QSysInfo::machineHostName())
 {
+    m_retry.setSingleShot(true);
+    connect(&m_retry, &QTimer::timeout, this, &EolStation::retryUnsavedNow);
 }
 
 EolStation::~EolStation()
@@ -134,6 +137,13 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         *error = tr("open a recipe first");
         return false;
     }
+    if (m_unsaved) {
+        *error =
+            tr("the result of unit %1 (%2) is not in the results database yet: nothing is "
+               "tested until it is. The station tries again by itself (%3)")
+                .arg(m_unsaved->serial, unitStatusName(m_unsaved->status).toUpper(), m_storeError);
+        return false;
+    }
     if (!m_writer->isOpen()) {
         *error = m_writer->isOpening()
                      ? tr("the results database is being opened; try again in a moment")
@@ -215,10 +225,48 @@ void EolStation::finished(const UnitRecord& record)
             m_counters.firstPassed += record.isPass() ? 1 : 0;
         }
     }
+    // A verdict the database does not hold is not a result yet: kept, tried again, and the
+    // station tests nothing meanwhile. (A unit never begun sent nothing: nothing to keep.)
+    if (!m_storeError.isEmpty() && !record.id.isEmpty()) {
+        m_unsaved = record;
+        m_retryDelayS = 1;
+        scheduleRetry();
+    }
     m_last.prepend(record);
     if (m_last.size() > kLastUnits)
         m_last.removeLast();
     emit unitFinished(record);
+}
+
+int EolStation::nextRetrySeconds() const
+{
+    return m_retry.isActive() ? (m_retry.remainingTime() + 999) / 1000 : 0;
+}
+
+void EolStation::scheduleRetry()
+{
+    m_retry.start(m_retryDelayS * 1000);
+    m_retryDelayS = std::min(30, m_retryDelayS * 2);
+}
+
+void EolStation::retryUnsavedNow()
+{
+    if (!m_unsaved)
+        return;
+    m_retry.stop();
+    m_writer->finishUnit(*m_unsaved, this, [this](const QString& error) {
+        if (!m_unsaved)
+            return;
+        if (!error.isEmpty()) {
+            m_storeError = error;
+            scheduleRetry();
+            emit unsavedResultChanged(false, error);
+            return;
+        }
+        m_unsaved.reset();
+        m_storeError.clear();
+        emit unsavedResultChanged(true, QString());
+    });
 }
 
 } // namespace opentop

@@ -7,8 +7,10 @@
 #include <QCoreApplication>
 #include <QObject>
 #include <QPointer>
+#include <QTimer>
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace opentop {
 
@@ -79,6 +81,12 @@ public:
     const QVector<UnitRecord>& lastUnits() const { return m_last; } // newest first
     QStringList unconfirmedStops() const { return m_unconfirmed; }
     QString storeError() const { return m_storeError; }
+    // The last unit's verdict could not be recorded: no unit starts until it is. The station
+    // tries again by itself (1 s, 2 s, 4 s … 30 s apart) on a new connection.
+    bool hasUnsavedResult() const { return m_unsaved.has_value(); }
+    const std::optional<UnitRecord>& unsavedResult() const { return m_unsaved; }
+    int nextRetrySeconds() const;
+    void retryUnsavedNow();
 
 signals:
     void unitStarted(const QString& serial);
@@ -87,11 +95,14 @@ signals:
     void speedSampled(int machineNumber, double speed, const QString& unit);
     void recording(const QString& what); // EolRun::recording
     void unitFinished(const opentop::UnitRecord& record);
+    // The unsaved verdict was recorded at last (recorded() true), or another try failed.
+    void unsavedResultChanged(bool recorded, const QString& error);
     // The answer to openDatabase(): `error` names the database and why not.
     void databaseOpened(bool ok, const QString& error);
 
 private:
     void finished(const UnitRecord& record);
+    void scheduleRetry();
 
     Recipe m_recipe;
     bool m_hasRecipe = false;
@@ -108,6 +119,9 @@ private:
     QVector<UnitRecord> m_last;
     QStringList m_unconfirmed;
     QString m_storeError;
+    std::optional<UnitRecord> m_unsaved;
+    QTimer m_retry;
+    int m_retryDelayS = 1;
 };
 
 } // namespace opentop

@@ -16,6 +16,38 @@ struct ResultWriter::State
 {
     std::unique_ptr<ResultDatabase> db;
     std::unique_ptr<ResultStore> store;
+    QString url; // as opened: a lost server connection is opened again with it
+
+    // A server that went away (restarted, network) leaves the connection dead: QtSql does not
+    // reconnect by itself. Opened again without marking anything interrupted (this station's
+    // own unit may be in progress).
+    bool reconnect(QString* error)
+    {
+        if (url.isEmpty())
+            return false;
+        std::unique_ptr<ResultDatabase> fresh = ResultDatabase::open(url, error);
+        if (!fresh)
+            return false;
+        store.reset();
+        db = std::move(fresh);
+        store = std::make_unique<ResultStore>(*db);
+        qCInfo(lcModel) << "results database: connected again to" << db->url().displayText();
+        return true;
+    }
+    // A job's write that failed is tried once more on a new connection, when one can be made.
+    template <typename Write> bool withRetry(Write write, QString* error)
+    {
+        if (store && write(*store, error))
+            return true;
+        QString why;
+        if (!reconnect(&why)) {
+            if (error->isEmpty())
+                *error = why;
+            return false;
+        }
+        error->clear();
+        return write(*store, error);
+    }
 };
 
 ResultWriter::ResultWriter(QObject* parent)
@@ -86,6 +118,7 @@ void ResultWriter::open(const QString& url, const QString& station, QObject* con
         opened.displayText = db->url().displayText();
         state.store.reset();
         state.db = std::move(db);
+        state.url = url;
         state.store = std::make_unique<ResultStore>(*state.db);
         opened.ok = true;
         if (!station.isEmpty()) {
@@ -134,10 +167,15 @@ void ResultWriter::beginUnit(const UnitRecord& record, QObject* context, BeginDo
     using Begun = std::pair<UnitRecord, QString>;
     std::function<Begun(State&)> job = [record](State& state) {
         Begun begun{record, QString()};
-        if (!state.store)
+        if (!state.store && state.url.isEmpty()) {
             begun.second = tr("the results database is not open");
-        else
-            state.store->beginUnit(begun.first, &begun.second);
+            return begun;
+        }
+        state.withRetry(
+            [&begun](ResultStore& store, QString* error) {
+                return store.beginUnit(begun.first, error); // a retry keeps the id it was given
+            },
+            &begun.second);
         return begun;
     };
     post<Begun>(context, std::move(job), [done](const Begun& b) { done(b.first, b.second); });
@@ -147,10 +185,14 @@ void ResultWriter::finishUnit(const UnitRecord& record, QObject* context, Finish
 {
     std::function<QString(State&)> job = [record](State& state) {
         QString error;
-        if (!state.store)
+        if (!state.store && state.url.isEmpty())
             return tr("the results database is not open");
-        UnitRecord finished = record;
-        state.store->finishUnit(finished, &error);
+        state.withRetry(
+            [&record](ResultStore& store, QString* why) {
+                UnitRecord finished = record;
+                return store.finishUnit(finished, why);
+            },
+            &error);
         return error;
     };
     post<QString>(context, std::move(job), std::move(done));

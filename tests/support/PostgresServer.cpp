@@ -104,21 +104,7 @@ bool PostgresServer::start(QString* error)
         runAs_ = QStringLiteral("postgres");
     }
     auto run = [&](const QString& program, const QStringList& args, int timeoutMs) {
-        QProcess p;
-        p.setWorkingDirectory(dir_->path());
-        p.setProcessChannelMode(QProcess::MergedChannels);
-        if (runAs_.isEmpty())
-            p.start(program, args);
-        else
-            p.start(QStringLiteral("runuser"),
-                    QStringList{QStringLiteral("-u"), runAs_, QStringLiteral("--"), program} +
-                        args);
-        const bool ok = p.waitForFinished(timeoutMs) && p.exitStatus() == QProcess::NormalExit &&
-                        p.exitCode() == 0;
-        if (!ok)
-            *error = QStringLiteral("%1 failed (%2): %3")
-                         .arg(program, p.errorString(), QString::fromLocal8Bit(p.readAll()));
-        return ok;
+        return runTool(program, args, timeoutMs, error);
     };
     const QString data = dir_->filePath(QStringLiteral("data"));
     if (!run(bin_ + QStringLiteral("/initdb"),
@@ -127,23 +113,72 @@ bool PostgresServer::start(QString* error)
               QStringLiteral("UTF8"), QStringLiteral("--no-sync"), QStringLiteral("--no-locale")},
              120000))
         return false;
+    if (!startServer(error))
+        return false;
+    startSeconds_ = timer.elapsed() / 1000.0;
+    return true;
+}
+
+bool PostgresServer::runTool(const QString& program, const QStringList& args, int timeoutMs,
+                             QString* error) const
+{
+    QProcess p;
+    p.setWorkingDirectory(dir_->path());
+    p.setProcessChannelMode(QProcess::MergedChannels);
+    if (runAs_.isEmpty())
+        p.start(program, args);
+    else
+        p.start(QStringLiteral("runuser"),
+                QStringList{QStringLiteral("-u"), runAs_, QStringLiteral("--"), program} + args);
+    const bool ok =
+        p.waitForFinished(timeoutMs) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+    if (!ok)
+        *error = QStringLiteral("%1 failed (%2): %3")
+                     .arg(program, p.errorString(), QString::fromLocal8Bit(p.readAll()));
+    return ok;
+}
+
+bool PostgresServer::startServer(QString* error)
+{
+    if (!externalUrl_.isEmpty()) {
+        *error = QStringLiteral("an external server (OPENTOP_TEST_PG_URL) is not started here");
+        return false;
+    }
+    // fsync off (nothing outlives the test run), but each commit written before it returns: a
+    // server stopped at once (stopServer) keeps what it committed, as a real one does.
     const QString options = QStringLiteral("-k %1 -p %2 -c listen_addresses='' -c fsync=off "
-                                           "-c synchronous_commit=off -c full_page_writes=off")
+                                           "-c full_page_writes=off")
                                 .arg(dir_->path())
                                 .arg(kPort);
-    if (!run(bin_ + QStringLiteral("/pg_ctl"),
-             {QStringLiteral("-D"), data, QStringLiteral("-l"),
-              dir_->filePath(QStringLiteral("log")), QStringLiteral("-o"), options,
-              QStringLiteral("-w"), QStringLiteral("-t"), QStringLiteral("60"),
-              QStringLiteral("start")},
-             90000)) {
+    if (!runTool(bin_ + QStringLiteral("/pg_ctl"),
+                 {QStringLiteral("-D"), dir_->filePath(QStringLiteral("data")),
+                  QStringLiteral("-l"), dir_->filePath(QStringLiteral("log")), QStringLiteral("-o"),
+                  options, QStringLiteral("-w"), QStringLiteral("-t"), QStringLiteral("60"),
+                  QStringLiteral("start")},
+                 90000, error)) {
         QFile log(dir_->filePath(QStringLiteral("log")));
         if (log.open(QIODevice::ReadOnly))
             *error += QStringLiteral("\nserver log:\n") + QString::fromLocal8Bit(log.readAll());
         return false;
     }
     running_ = true;
-    startSeconds_ = timer.elapsed() / 1000.0;
+    return true;
+}
+
+bool PostgresServer::stopServer(QString* error)
+{
+    if (!externalUrl_.isEmpty()) {
+        *error = QStringLiteral("an external server (OPENTOP_TEST_PG_URL) is not stopped here");
+        return false;
+    }
+    // As a crash or a pulled cable would: immediately, connections broken.
+    if (!runTool(bin_ + QStringLiteral("/pg_ctl"),
+                 {QStringLiteral("-D"), dir_->filePath(QStringLiteral("data")),
+                  QStringLiteral("-m"), QStringLiteral("immediate"), QStringLiteral("-w"),
+                  QStringLiteral("stop")},
+                 60000, error))
+        return false;
+    running_ = false;
     return true;
 }
 

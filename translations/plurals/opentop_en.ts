@@ -389,7 +389,7 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="215"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="218"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>

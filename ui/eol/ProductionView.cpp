@@ -17,6 +17,7 @@
 #include <QShortcut>
 #include <QSplitter>
 #include <QTableWidget>
+#include <QTime>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <pwd.h>
@@ -143,6 +144,8 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
                 m_chart->add(n, m_clock.elapsed() / 1000.0, speed, unit);
             });
     connect(m_station, &EolStation::unitFinished, this, &ProductionView::unitFinished);
+    connect(m_station, &EolStation::unsavedResultChanged, this,
+            &ProductionView::unsavedResultChanged);
     connect(m_station, &EolStation::databaseOpened, this, [this] { refresh(); });
     connect(m_station, &EolStation::recording, this, [this](const QString& what) {
         if (!m_station->run())
@@ -220,7 +223,8 @@ void ProductionView::refreshRecipe()
     m_database->setText(tr("Station %1 · results: %2 · per-unit values: %3")
                             .arg(m_station->station(), m_station->databaseText(),
                                  m_station->hasUnitValues() ? tr("loaded") : tr("none")));
-    m_serial->setEnabled(m_station->hasRecipe() && !m_station->isRunning());
+    m_serial->setEnabled(m_station->hasRecipe() && !m_station->isRunning() &&
+                         !m_station->hasUnsavedResult());
 }
 
 void ProductionView::refreshCounters()
@@ -307,19 +311,11 @@ void ProductionView::unitFinished(const UnitRecord& record)
 {
     m_cancel->setEnabled(false);
     QString reason = record.failureReason;
-    if (!m_station->storeError().isEmpty())
-        reason += QLatin1Char('\n') + tr("NOT RECORDED: %1").arg(m_station->storeError());
-    switch (record.status) {
-    case UnitStatus::Pass:
-        showVerdict(tr("PASS"), QStringLiteral("#1e7b34"),
-                    m_station->storeError().isEmpty() ? tr("Unit %1").arg(record.serial) : reason);
-        break;
-    case UnitStatus::Fail:
-        showVerdict(tr("FAIL"), QStringLiteral("#b3261e"), reason);
-        break;
-    default:
-        showVerdict(tr("ABORTED"), QStringLiteral("#b35c00"), reason);
-        break;
+    if (m_station->hasUnsavedResult()) {
+        // Never a verdict the database does not hold: red, and nothing else is tested.
+        showNotRecorded();
+    } else {
+        showVerdictOf(record, reason);
     }
     if (!m_station->unconfirmedStops().isEmpty())
         QMessageBox::critical(this, tr("Motor not confirmed stopped"),
@@ -327,7 +323,9 @@ void ProductionView::unitFinished(const UnitRecord& record)
                                  "the unit:\n\n%1")
                                   .arg(m_station->unconfirmedStops().join(QLatin1Char('\n'))));
     m_units->insertRow(0);
-    const QString verdict = unitStatusName(record.status).toUpper();
+    QString verdict = unitStatusName(record.status).toUpper();
+    if (m_station->hasUnsavedResult())
+        verdict = tr("%1, NOT RECORDED").arg(verdict);
     const QStringList cells{record.ended.toLocalTime().toString(QStringLiteral("HH:mm:ss")),
                             record.serial, verdict, record.failureReason};
     for (int c = 0; c < cells.size(); ++c)
@@ -338,6 +336,53 @@ void ProductionView::unitFinished(const UnitRecord& record)
     refreshRecipe();
     m_serial->clear();
     focusSerial();
+}
+
+void ProductionView::showNotRecorded()
+{
+    const UnitRecord& unit = *m_station->unsavedResult();
+    showVerdict(
+        tr("NOT RECORDED"), QStringLiteral("#b3261e"),
+        tr("Unit %1 ended %2, but its result is not in the results database: %3\n"
+           "Nothing is tested until it is recorded. The station tries again by itself "
+           "(next in %4 s); keep the unit aside.")
+            .arg(unit.serial, unitStatusName(unit.status).toUpper(), m_station->storeError())
+            .arg(m_station->nextRetrySeconds()));
+    m_serial->setEnabled(false);
+}
+
+void ProductionView::unsavedResultChanged(bool recorded)
+{
+    if (!recorded) {
+        showNotRecorded();
+        return;
+    }
+    const UnitRecord unit =
+        m_station->lastUnits().isEmpty() ? UnitRecord() : m_station->lastUnits().first();
+    if (m_units->rowCount() > 0 && m_units->item(0, 2))
+        m_units->item(0, 2)->setText(unitStatusName(unit.status).toUpper());
+    showVerdictOf(unit, tr("%1\nRecorded at %2, after the results database came back.")
+                            .arg(unit.failureReason.isEmpty() ? tr("Unit %1").arg(unit.serial)
+                                                              : unit.failureReason,
+                                 QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))));
+    refreshRecipe();
+    focusSerial();
+}
+
+void ProductionView::showVerdictOf(const UnitRecord& record, const QString& reason)
+{
+    switch (record.status) {
+    case UnitStatus::Pass:
+        showVerdict(tr("PASS"), QStringLiteral("#1e7b34"),
+                    reason.isEmpty() ? tr("Unit %1").arg(record.serial) : reason);
+        break;
+    case UnitStatus::Fail:
+        showVerdict(tr("FAIL"), QStringLiteral("#b3261e"), reason);
+        break;
+    default:
+        showVerdict(tr("ABORTED"), QStringLiteral("#b35c00"), reason);
+        break;
+    }
 }
 
 } // namespace opentop

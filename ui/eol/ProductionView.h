@@ -57,6 +57,9 @@ private:
     void unitStarted(const QString& serial);
     void phaseChanged(int machineNumber, int phase, const QString& text);
     void unitFinished(const UnitRecord& record);
+    void unsavedResultChanged(bool recorded);
+    void showNotRecorded();
+    void showVerdictOf(const UnitRecord& record, const QString& reason);
     void refreshRecipe();
     void refreshCounters();
 

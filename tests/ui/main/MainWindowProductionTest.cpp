@@ -3,6 +3,7 @@
 // and counted; nothing that edits a parameter is offered meanwhile; quitting while a unit runs
 // asks, cancels it, stops its motor and records it as aborted.
 #include "MainWindowFixture.h"
+#include "PostgresServer.h"
 #include "TrafficLog.h"
 #include "eol/EolSpeedChart.h"
 #include "eol/EolStation.h"
@@ -215,6 +216,68 @@ TEST_F(MainWindowProductionTest, TheScreenAnswersWhileTheResultsDatabaseIsBusy)
     EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
         << qPrintable(view->reasonLabel()->text());
     const auto history = ResultQueries(*other).history(QStringLiteral("SN-BUSY"), &error);
+    ASSERT_TRUE(history && history->size() == 1) << qPrintable(error);
+    EXPECT_EQ(history->first().status, UnitStatus::Pass);
+}
+
+// Issue 25: the station's shared PostgreSQL stops while a unit runs. The verdict the database
+// does not hold is never shown as a result, nothing else is tested meanwhile, and the station
+// records it by itself once the server is back.
+TEST_F(MainWindowProductionTest, APassTheDatabaseDidNotTakeIsShownNotRecordedUntilTheServerTakesIt)
+{
+    if (PostgresServer::skipRequested())
+        GTEST_SKIP() << "OPENTOP_TEST_PG_SKIP=1: PostgreSQL tests skipped on request";
+    QString error;
+    PostgresServer* server = PostgresServer::shared(&error);
+    ASSERT_TRUE(server) << qPrintable(error);
+    const QString url = server->createDatabase(QStringLiteral("station_lost"), &error);
+    ASSERT_FALSE(url.isEmpty()) << qPrintable(error);
+    qputenv("OPENTOP_EOL_DB", url.toLocal8Bit());
+    window->production()->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    EolStation* station = window->production()->station();
+    ASSERT_TRUE(waitFor([&] { return station->hasDatabase(); }, 20000));
+
+    QTemporaryDir dir;
+    ProductionView* view = window->production()->view();
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir, 2)));
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-PG1"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    // The motor turns only once the unit's row is in the database; then the server goes.
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }, 20000));
+    ASSERT_TRUE(server->stopServer(&error)) << qPrintable(error);
+    ASSERT_TRUE(
+        waitFor([&] { return view->verdictLabel()->text() != QLatin1String("TESTING"); }, 30000));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("NOT RECORDED"))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("Unit SN-PG1 ended PASS")))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_TRUE(view->verdictLabel()->styleSheet().contains(QStringLiteral("#b3261e")));
+    EXPECT_FALSE(view->serialField()->isEnabled()) << "nothing is tested while a result waits";
+    ASSERT_EQ(view->unitsTable()->rowCount(), 1);
+    EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS, NOT RECORDED"));
+    EXPECT_EQ(speedOf(1), 0);
+    // Another unit is refused, whatever starts it, and moves nothing.
+    QString refusal;
+    EXPECT_FALSE(station->start(window->client(), nullptr, QStringLiteral("SN-PG2"), {}, &refusal));
+    EXPECT_TRUE(refusal.contains(QStringLiteral("not in the results database yet")))
+        << qPrintable(refusal);
+    QTest::qWait(500);
+    EXPECT_EQ(speedOf(1), 0);
+
+    // The server returns: the station connects again and records the verdict itself.
+    ASSERT_TRUE(server->startServer(&error)) << qPrintable(error);
+    ASSERT_TRUE(
+        waitFor([&] { return view->verdictLabel()->text() == QLatin1String("PASS"); }, 45000))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("Recorded at")))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS"));
+    EXPECT_TRUE(view->serialField()->isEnabled());
+    EXPECT_FALSE(station->hasUnsavedResult());
+    const auto database = ResultDatabase::open(url, &error);
+    ASSERT_TRUE(database) << qPrintable(error);
+    const auto history = ResultQueries(*database).history(QStringLiteral("SN-PG1"), &error);
     ASSERT_TRUE(history && history->size() == 1) << qPrintable(error);
     EXPECT_EQ(history->first().status, UnitStatus::Pass);
 }
