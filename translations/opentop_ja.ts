@@ -5818,52 +5818,62 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="148"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="133"/>
+        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>接続できません（%1）。自動で再試行中</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="155"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="137"/>
+        <location filename="../model/eol/EolStation.cpp" line="159"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="142"/>
+        <location filename="../model/eol/EolStation.cpp" line="164"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="149"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="150"/>
+        <location filename="../model/eol/EolStation.cpp" line="173"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="181"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="185"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="177"/>
+        <location filename="../model/eol/EolStation.cpp" line="203"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
@@ -9194,56 +9204,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生産モード（出荷検査）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>出荷検査ステーションの作業者画面。元に戻すまでパラメータは編集できません (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
         <source>&amp;Full screen</source>
         <translation>全画面表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <source>%1
+
+No unit can be tested until results can be recorded. The station tries again by itself.</source>
+        <translation>%1
+
+結果を記録できるようになるまで、製品は試験できません。ステーションが自動で再試行します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
         <source>Production mode</source>
         <translation>生産モード</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>製品を試験中です。エンジニアリングモードに戻る前に、キャンセル (Esc) するか試験の終了を待ってください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>Results database</source>
         <translation>結果データベース</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
-        <source>%1
-
-No unit can be tested until results can be recorded.</source>
-        <translation>%1
-
-結果を記録できるようになるまで、製品を試験できません。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
         <source>A unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>製品 %1 を試験中です。キャンセルして「%2」を実行しますか？ 先にモータを停止し、製品は中止として記録します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
         <source>cancelled to %1</source>
         <translation>「%1」のためキャンセル</translation>
     </message>

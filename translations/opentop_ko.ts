@@ -5818,52 +5818,62 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="148"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="133"/>
+        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="155"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="137"/>
+        <location filename="../model/eol/EolStation.cpp" line="159"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="142"/>
+        <location filename="../model/eol/EolStation.cpp" line="164"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="149"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="150"/>
+        <location filename="../model/eol/EolStation.cpp" line="173"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="181"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="185"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="177"/>
+        <location filename="../model/eol/EolStation.cpp" line="203"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
@@ -9194,56 +9204,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>생산 모드(&amp;P) (출하 검사)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>출하 검사 스테이션의 작업자 화면. 다시 전환할 때까지 파라미터 편집 불가(Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
         <source>&amp;Full screen</source>
         <translation>전체 화면(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <source>%1
+
+No unit can be tested until results can be recorded. The station tries again by itself.</source>
+        <translation>%1
+
+결과를 기록할 수 있을 때까지 어떤 제품도 검사할 수 없습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
         <source>Production mode</source>
         <translation>생산 모드</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>제품 검사 중입니다. 엔지니어링 모드로 돌아가기 전에 검사를 취소(Esc)하거나 끝날 때까지 기다리십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>Results database</source>
         <translation>결과 데이터베이스</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
-        <source>%1
-
-No unit can be tested until results can be recorded.</source>
-        <translation>%1
-
-결과를 기록할 수 있을 때까지 제품을 검사할 수 없습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
         <source>A unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>제품 %1을(를) 검사 중입니다. 검사를 취소하고 %2하시겠습니까? 먼저 모터를 정지하며, 제품은 중지됨으로 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
         <source>cancelled to %1</source>
         <translation>%1하기 위해 취소함</translation>
     </message>

@@ -5818,52 +5818,62 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="148"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>opening the results database</source>
         <translation>正在打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="133"/>
+        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>无法连接（%1）；正在自动重试</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="155"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="137"/>
+        <location filename="../model/eol/EolStation.cpp" line="159"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="142"/>
+        <location filename="../model/eol/EolStation.cpp" line="164"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="149"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在打开结果数据库；请稍后再试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="150"/>
+        <location filename="../model/eol/EolStation.cpp" line="173"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="181"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="185"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="177"/>
+        <location filename="../model/eol/EolStation.cpp" line="203"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
@@ -9194,56 +9204,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生产模式（下线检测）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>下线检测工位的操作员界面；切换回来之前不能编辑参数（Ctrl+Shift+P）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
         <source>&amp;Full screen</source>
         <translation>全屏(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <source>%1
+
+No unit can be tested until results can be recorded. The station tries again by itself.</source>
+        <translation>%1
+
+能够记录结果之前，无法测试任何产品。工作站会自动重试。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
         <source>Production mode</source>
         <translation>生产模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>正在测试一台产品。请先取消测试（Esc）或等待测试完成，再切换回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>Results database</source>
         <translation>结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
-        <source>%1
-
-No unit can be tested until results can be recorded.</source>
-        <translation>%1
-
-在能够记录结果之前，无法测试任何产品。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
         <source>A unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>正在测试产品 %1。取消测试并%2？会先停止其电机；该产品将记录为已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>

@@ -5818,52 +5818,62 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="148"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="126"/>
+        <location filename="../model/eol/EolStation.cpp" line="145"/>
         <source>opening the results database</source>
         <translation>正在開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="133"/>
+        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>無法連線（%1）；自動重試中</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="155"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="137"/>
+        <location filename="../model/eol/EolStation.cpp" line="159"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="142"/>
+        <location filename="../model/eol/EolStation.cpp" line="164"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="149"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在開啟結果資料庫；請稍後再試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="150"/>
+        <location filename="../model/eol/EolStation.cpp" line="173"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="181"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="185"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="177"/>
+        <location filename="../model/eol/EolStation.cpp" line="203"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
@@ -9194,56 +9204,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="27"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生產模式 (終檢)(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="30"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>終檢工站的作業員畫面；切換回來之前無法編輯參數 (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="33"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
         <source>&amp;Full screen</source>
         <translation>全螢幕(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <source>%1
+
+No unit can be tested until results can be recorded. The station tries again by itself.</source>
+        <translation>%1
+
+可記錄結果之前，無法測試任何產品。工作站會自動重試。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
         <source>Production mode</source>
         <translation>生產模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="56"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>有產品正在測試中。請先取消 (Esc) 或等待測試完成，再切換回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>Results database</source>
         <translation>結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
-        <source>%1
-
-No unit can be tested until results can be recorded.</source>
-        <translation>%1
-
-在能夠記錄結果之前，無法測試任何產品。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="99"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
         <source>A unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="100"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>產品 %1 正在測試中。要取消測試並%2嗎？會先停止其馬達，並將此產品記錄為已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="112"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>

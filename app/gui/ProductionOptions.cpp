@@ -57,8 +57,9 @@ bool ProductionOptions::apply(const QCommandLineParser& parser, MainWindow* wind
     }
     if (parser.isSet(kUnits) && !station->loadUnitValues(parser.value(kUnits), error))
         return false;
-    if (!station->openDatabaseAndWait(parser.value(kResultsDb), error))
-        return false;
+    // On the results thread, the window shown meanwhile: a server that is down is said on the
+    // screen and tried again by itself; no unit starts until the database is open.
+    station->openDatabase(parser.value(kResultsDb));
     window->production()->setActive(true);
     return true;
 }

@@ -27,6 +27,11 @@ EolStation::EolStation(QObject* parent)
 {
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &EolStation::retryUnsavedNow);
+    m_openRetry.setSingleShot(true);
+    connect(&m_openRetry, &QTimer::timeout, this, [this] {
+        if (!m_writer->isOpen() && !m_writer->isOpening())
+            openDatabase(m_dbUrl);
+    });
 }
 
 EolStation::~EolStation()
@@ -97,8 +102,21 @@ QString databaseLocation(const QString& url)
 
 void EolStation::openDatabase(const QString& url)
 {
-    m_writer->open(databaseLocation(url), m_station, this,
-                   [this](const ResultWriter::Opened& o) { emit databaseOpened(o.ok, o.error); });
+    m_dbUrl = url;
+    m_openRetry.stop();
+    m_writer->open(databaseLocation(url), m_station, this, [this](const ResultWriter::Opened& o) {
+        if (o.ok) {
+            m_dbError.clear();
+            m_openDelayS = 2;
+        } else {
+            // The screen says so and the station tries again: a line does not wait for someone
+            // to restart it when the server is back.
+            m_dbError = o.error;
+            m_openRetry.start(m_openDelayS * 1000);
+            m_openDelayS = std::min(30, m_openDelayS * 2);
+        }
+        emit databaseOpened(o.ok, o.error);
+    });
 }
 
 bool EolStation::openDatabaseAndWait(const QString& url, QString* error)
@@ -123,7 +141,11 @@ QString EolStation::databaseText() const
 {
     if (m_writer->isOpen())
         return m_writer->displayText();
-    return m_writer->isOpening() ? tr("opening the results database") : tr("no results database");
+    if (m_writer->isOpening())
+        return tr("opening the results database");
+    if (!m_dbError.isEmpty())
+        return tr("NOT REACHABLE (%1); trying again by itself").arg(m_dbError);
+    return tr("no results database");
 }
 
 bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
@@ -147,8 +169,12 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     if (!m_writer->isOpen()) {
         *error = m_writer->isOpening()
                      ? tr("the results database is being opened; try again in a moment")
-                     : tr("the results database is not open; nothing is tested unless it is "
-                          "recorded");
+                 : m_dbError.isEmpty()
+                     ? tr("the results database is not open; nothing is tested unless it is "
+                          "recorded")
+                     : tr("the results database cannot be reached (%1); nothing is tested unless "
+                          "it is recorded. The station tries again by itself.")
+                           .arg(m_dbError);
         return false;
     }
     if (!client) {

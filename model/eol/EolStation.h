@@ -56,11 +56,17 @@ public:
     // Opens the results database on its own thread (`url` empty: OPENTOP_EOL_DB, else the
     // default file, made when missing); the station's leftovers from a crash become
     // interrupted. databaseOpened() answers.
+    // A database that cannot be opened (a server down) is tried again by itself, 2, 4 … 30 s
+    // apart, until it opens; databaseOpened() answers each try.
     void openDatabase(const QString& url);
     // The same, waiting for the answer in a local event loop (start-up, before the window
     // shows); no databaseOpened().
     bool openDatabaseAndWait(const QString& url, QString* error);
     QString databaseText() const;
+    // Why the last try to open the database failed; empty once it is open.
+    QString databaseError() const { return m_dbError; }
+    // The URL given to openDatabase() (empty: OPENTOP_EOL_DB or the default file).
+    QString databaseUrl() const { return m_dbUrl; }
     bool hasDatabase() const;
     bool isOpeningDatabase() const;
     void setStation(const QString& station) { m_station = station; }
@@ -122,6 +128,10 @@ private:
     std::optional<UnitRecord> m_unsaved;
     QTimer m_retry;
     int m_retryDelayS = 1;
+    QString m_dbUrl;
+    QString m_dbError;
+    QTimer m_openRetry;
+    int m_openDelayS = 2;
 };
 
 } // namespace opentop

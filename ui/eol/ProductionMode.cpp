@@ -9,6 +9,7 @@
 #include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
+#include <utility>
 
 namespace opentop {
 
@@ -36,10 +37,23 @@ ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLa
     connect(m_fullScreen, &QAction::toggled, this,
             [this](bool on) { on ? m_window->showFullScreen() : m_window->showNormal(); });
     connect(m_station, &EolStation::databaseOpened, this, [this](bool ok, const QString& error) {
-        if (!ok && isActive())
-            QMessageBox::warning(
-                m_window, tr("Results database"),
-                tr("%1\n\nNo unit can be tested until results can be recorded.").arg(error));
+        // Said once per outage: the station goes on trying by itself and the screen's status
+        // line says so.
+        if (ok || !isActive() || std::exchange(m_warnedDatabase, true))
+            return;
+        // Window-modal, not blocking: the screen and its STOP keys go on behind it.
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Results database"),
+                                    tr("%1\n\nNo unit can be tested until results can be "
+                                       "recorded. The station tries again by itself.")
+                                        .arg(error),
+                                    QMessageBox::Ok, m_window);
+        box->setObjectName(QStringLiteral("resultsDatabaseWarning"));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+    connect(m_station, &EolStation::databaseOpened, this, [this](bool ok) {
+        if (ok)
+            m_warnedDatabase = false;
     });
 }
 
@@ -81,7 +95,7 @@ void ProductionMode::setActive(bool active)
         }
         // On the results thread: a database across the network may take seconds to answer.
         if (!m_station->hasDatabase() && !m_station->isOpeningDatabase())
-            m_station->openDatabase(QString());
+            m_station->openDatabase(m_station->databaseUrl());
         m_view->refresh();
         m_view->focusSerial();
     } else {

@@ -53,6 +53,7 @@ private:
     QAction* m_toggle;
     QAction* m_fullScreen;
     QVector<QDockWidget*> m_hiddenDocks;
+    bool m_warnedDatabase = false; // the operator was told the database cannot be reached
 };
 
 } // namespace opentop

@@ -33,6 +33,7 @@ public:
     QLabel* verdictLabel() const { return m_verdict; }
     QLabel* reasonLabel() const { return m_reason; }
     QLabel* countersLabel() const { return m_counters; }
+    QLabel* databaseLabel() const { return m_database; }
     QPushButton* cancelButton() const { return m_cancel; }
     QTableWidget* drivesTable() const { return m_drives; }
     QTableWidget* unitsTable() const { return m_units; }

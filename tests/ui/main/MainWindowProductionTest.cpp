@@ -281,3 +281,57 @@ TEST_F(MainWindowProductionTest, APassTheDatabaseDidNotTakeIsShownNotRecordedUnt
     ASSERT_TRUE(history && history->size() == 1) << qPrintable(error);
     EXPECT_EQ(history->first().status, UnitStatus::Pass);
 }
+
+// Issue 25: the station starts while its PostgreSQL server is down. The window is there and says
+// so, nothing is tested, and once the server is up the station opens it by itself.
+TEST_F(MainWindowProductionTest, AStationWhoseServerIsDownSaysSoTestsNothingAndOpensItWhenItIsBack)
+{
+    if (PostgresServer::skipRequested())
+        GTEST_SKIP() << "OPENTOP_TEST_PG_SKIP=1: PostgreSQL tests skipped on request";
+    QString error;
+    PostgresServer* server = PostgresServer::shared(&error);
+    ASSERT_TRUE(server) << qPrintable(error);
+    const QString url = server->createDatabase(QStringLiteral("station_down"), &error);
+    ASSERT_FALSE(url.isEmpty()) << qPrintable(error);
+    ASSERT_TRUE(server->stopServer(&error)) << qPrintable(error);
+
+    EolStation* station = window->production()->station();
+    station->openDatabase(url); // as --production RECIPE --results-db URL does
+    window->production()->setActive(true);
+    ProductionView* view = window->production()->view();
+    ASSERT_TRUE(waitFor([&] { return !station->databaseError().isEmpty(); }, 20000));
+    EXPECT_FALSE(station->hasDatabase());
+    EXPECT_TRUE(window->isVisible());
+    EXPECT_TRUE(view->databaseLabel()->text().contains(QStringLiteral("NOT REACHABLE")))
+        << qPrintable(view->databaseLabel()->text());
+    // Told once, without blocking the screen.
+    auto* warning = window->findChild<QMessageBox*>(QStringLiteral("resultsDatabaseWarning"));
+    ASSERT_NE(warning, nullptr);
+    warning->accept();
+
+    QTemporaryDir dir;
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir, 0.5)));
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-DOWN1"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("NOT STARTED"));
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("cannot be reached")))
+        << qPrintable(view->reasonLabel()->text());
+    QTest::qWait(300);
+    EXPECT_EQ(speedOf(1), 0);
+
+    ASSERT_TRUE(server->startServer(&error)) << qPrintable(error);
+    ASSERT_TRUE(waitFor([&] { return station->hasDatabase(); }, 45000))
+        << qPrintable(station->databaseError());
+    EXPECT_FALSE(view->databaseLabel()->text().contains(QStringLiteral("NOT REACHABLE")))
+        << qPrintable(view->databaseLabel()->text());
+    view->serialField()->setText(QStringLiteral("SN-DOWN1"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    ASSERT_TRUE(waitFor(
+        [&] {
+            const QString v = view->verdictLabel()->text();
+            return v != QLatin1String("TESTING") && v != QLatin1String("NOT STARTED");
+        },
+        30000));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
+        << qPrintable(view->reasonLabel()->text());
+}
