@@ -4,6 +4,7 @@
 // as live), every drive is found, the DC controller included, and polling goes on afterwards.
 // An address that answers but cannot be identified is named in the scan's result.
 #include "MainWindowFixture.h"
+#include "bus/BusScanner.h"
 
 #include "../../e2e/SimProcess.h"
 #include "widgets/StaleLook.h"
@@ -158,14 +159,18 @@ TEST_F(MainWindowScanTest, AnAddressThatAnsweredButCouldNotBeIdentifiedIsNamedIn
     connectToSim(sim, 19200, 50);
     BusPanel* panel = window->busPanel();
     panel->startScan(1, 10);
+    // What the panel says at the retry, caught when the scanner announces it (a busy machine
+    // may pass that moment between two looks).
     bool sawRetry = false;
-    ASSERT_TRUE(waitFor(
-        [&] {
+    auto* scanner = panel->findChild<BusScanner*>();
+    ASSERT_NE(scanner, nullptr);
+    // (Connected after the panel's own slot, so it runs after the panel has said it.)
+    QObject::connect(scanner, &BusScanner::identificationRetry, panel, [&](int slave, int attempt) {
+        if (slave == 7 && attempt == 1)
             sawRetry |= panel->message().startsWith(QStringLiteral(
                 "Machine number 7 answered, identification failed: retrying (1 of 3)…"));
-            return !panel->isScanning();
-        },
-        30000));
+    });
+    ASSERT_TRUE(waitFor([&] { return !panel->isScanning(); }, 30000));
     EXPECT_TRUE(sawRetry);
     const QString result = panel->message();
     EXPECT_TRUE(result.startsWith(QStringLiteral("1 drive found on machine numbers 1–10 in ")))
