@@ -8,6 +8,7 @@
 #include "session/StoreTracker.h"
 
 #include <algorithm>
+#include <memory>
 
 namespace opentop {
 
@@ -78,8 +79,10 @@ void BusDrives::remove(int slave)
     if (it == m_drives.end())
         return;
     m_variantDeclined.remove(slave); // another drive may answer there later
-    delete it->parameters;
-    delete it->session;
+    // Gone from the list first, deleted after the listeners heard it: a page showing the drive
+    // lets go of its parameters while they still exist (the bus list's Remove from list).
+    const std::unique_ptr<DeviceSession> session(it->session); // deleted last, as it was made
+    const std::unique_ptr<DeviceParameters> parameters(it->parameters);
     m_drives.erase(it);
     emit driveRemoved(slave);
 }

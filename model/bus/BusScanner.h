@@ -36,8 +36,9 @@ public:
     static constexpr double kAnswerBudgetMs = 10.0;
     // Times an address that answered is asked again before it is reported unidentified.
     static constexpr int kIdentifyRetries = 3;
-    // How far back a garbled frame makes silent addresses suspect: several waits, at least this.
-    static constexpr int kSuspectWindowMs = 120;
+    // How far back a garbled frame makes silent addresses suspect: several waits, at least this
+    // (a re-ask costs four waits, and garbled frames are rare on a sound line).
+    static constexpr int kSuspectWindowMs = 400; // a busy machine delays replies that long
 
     BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
     ~BusScanner() override;

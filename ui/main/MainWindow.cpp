@@ -12,6 +12,7 @@
 #include "bus/FixedLineHint.h"
 #include "connection/ConnectionDialog.h"
 #include "eol/EolMenu.h"
+#include "eol/EolStation.h"
 #include "eol/ProductionMode.h"
 #include "main/LinkBar.h"
 #include "main/MainMenus.h"
@@ -239,6 +240,15 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
     m_stopAll = new StopAllButton(m_drives, m_menus->toolbar());
     m_stopAllAction = m_menus->toolbar()->addWidget(m_stopAll);
+    // The station's recipe knows its machine numbers: STOP ALL checks them, scanned or not.
+    m_stopAll->setExpectedDrives([this] {
+        QVector<QPair<int, QString>> drives;
+        const EolStation* station = m_production ? m_production->station() : nullptr;
+        if (station && station->hasRecipe())
+            for (const RecipePosition& p : station->recipe().positions)
+                drives.append({p.machineNumber, p.family});
+        return drives;
+    });
     // No way out of this bus (quit, another connection) leaves a motor running unannounced.
     m_exitGuard = new ExitGuard(m_drives, m_poller, this);
     m_exitGuard->setLostLinkQuestion([this](const QString& leaving, std::function<void()> proceed) {

@@ -7,6 +7,7 @@
 #include "profile/ValueCodec.h"
 #include "session/DeviceSession.h"
 
+#include <QHash>
 #include <QMessageBox>
 
 namespace opentop {
@@ -63,8 +64,24 @@ void StopAllButton::stopAll()
             known << slave;
     }
     auto* stop = new StopAll(m_drives->client(), ProfileRegistry::builtIn(), this);
+    // A recipe's positions are checked whether a scan found them or not (a station restarted
+    // after a crash has not scanned): a session of their family, for this stop only.
+    QHash<int, DeviceSession*> expected;
+    if (m_expected) {
+        for (const auto& [slave, family] : m_expected()) {
+            const Profile* profile = ProfileRegistry::builtIn().family(family);
+            if (known.contains(slave) || !profile || m_drives->session(slave))
+                continue;
+            known << slave;
+            expected.insert(
+                slave, new DeviceSession(m_drives->client(), *profile, slave, QString(), stop));
+        }
+    }
     BusDrives* drives = m_drives;
-    stop->setSessionLookup([drives](int slave) { return drives->session(slave); });
+    stop->setSessionLookup([drives, expected](int slave) {
+        DeviceSession* session = drives->session(slave);
+        return session ? session : expected.value(slave);
+    });
     stop->setTiming(m_timing);
     ++m_running;
     setText(tr("STOPPING…"));

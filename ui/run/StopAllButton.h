@@ -4,6 +4,7 @@
 
 #include <QPointer>
 #include <QPushButton>
+#include <functional>
 
 class QMessageBox;
 
@@ -29,6 +30,10 @@ public:
     static void install(QWidget* window);
 
     void setTiming(const StopConfirmer::Timing& timing) { m_timing = timing; }
+    // Drives that must be checked too though no scan found them: machine number and profile
+    // family (an end-of-line recipe's positions). Asked at every press.
+    using ExpectedDrives = std::function<QVector<QPair<int, QString>>()>;
+    void setExpectedDrives(ExpectedDrives expected) { m_expected = std::move(expected); }
     bool isStopping() const { return m_running > 0; }
     // The result of the last stop, as shown in the result window.
     QString reportText() const { return m_reportText; }
@@ -50,6 +55,7 @@ private:
 
     BusDrives* m_drives;
     StopConfirmer::Timing m_timing;
+    ExpectedDrives m_expected;
     int m_running = 0;
     QString m_reportText;
     QString m_reportTitle;

@@ -1,6 +1,9 @@
 #pragma once
 
+#include "session/DeviceParameters.h"
+
 #include <QHash>
+#include <QPointer>
 #include <QWidget>
 #include <functional>
 
@@ -10,7 +13,6 @@ class QTabWidget;
 
 namespace opentop {
 
-class DeviceParameters;
 class ParameterPage;
 struct ProfileGroup;
 
@@ -52,7 +54,7 @@ private:
 
     static QHash<QString, EditorFactory>& editors();
 
-    DeviceParameters* m_parameters = nullptr;
+    QPointer<DeviceParameters> m_parameters; // its drive may leave the bus list meanwhile
     QLabel* m_title;
     QTabWidget* m_tabs;
     QLabel* m_status;

@@ -335,3 +335,26 @@ TEST_F(MainWindowProductionTest, AStationWhoseServerIsDownSaysSoTestsNothingAndO
     EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
         << qPrintable(view->reasonLabel()->text());
 }
+
+// Issue 25: a station restarted after a crash has not scanned its bus, and a recipe's drive may
+// still be turning. STOP ALL checks the recipe's machine numbers all the same.
+TEST_F(MainWindowProductionTest, StopAllChecksTheRecipesDrivesThoughNoScanFoundThem)
+{
+    QTemporaryDir dir;
+    QString db;
+    ASSERT_TRUE(enterProduction(dir, &db));
+    ASSERT_TRUE(window->production()->view()->openRecipe(recipeFile(dir, 1)));
+    startDrive(1);
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }));
+    window->drives()->remove(1); // as if the bus had never been scanned
+    ASSERT_FALSE(window->drives()->slaves().contains(1));
+
+    StopAllButton* stop = window->stopAllButton();
+    stop->click();
+    ASSERT_TRUE(waitFor([&] { return !stop->isStopping(); }, 15000));
+    EXPECT_EQ(speedOf(1), 0);
+    EXPECT_TRUE(stop->reportText().contains(QStringLiteral("Machine number 1: stopped after")))
+        << qPrintable(stop->reportText());
+    EXPECT_FALSE(stop->reportText().contains(QStringLiteral("No drives are known")))
+        << qPrintable(stop->reportText());
+}
