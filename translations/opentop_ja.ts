@@ -7665,33 +7665,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="54"/>
+        <location filename="../ui/main/MainWindow.cpp" line="55"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="138"/>
+        <location filename="../ui/main/MainWindow.cpp" line="139"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1 に接続中…（%2 には接続したまま）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="201"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>接続済み: %1（新しい接続は失敗しました: %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="218"/>
         <source>Cannot connect</source>
         <translation>接続できません</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7700,76 @@ Still connected to %2; nothing was changed.</source>
 %2 に接続したままです。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="208"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Not connected: %1</source>
         <translation>未接続: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="269"/>
+        <location filename="../ui/main/MainWindow.cpp" line="279"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信グループ: %1（バス › 通信グループ）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="300"/>
-        <location filename="../ui/main/MainWindow.cpp" line="302"/>
+        <location filename="../ui/main/MainWindow.cpp" line="310"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="307"/>
+        <location filename="../ui/main/MainWindow.cpp" line="317"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — シミュレーションバス（ハードウェアなし）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="308"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="309"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>Connecting to %1…</source>
         <translation>%1 に接続中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="329"/>
+        <location filename="../ui/main/MainWindow.cpp" line="339"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="336"/>
+        <location filename="../ui/main/MainWindow.cpp" line="346"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="364"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="414"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="401"/>
+        <location filename="../ui/main/MainWindow.cpp" line="411"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
-        <location filename="../ui/main/MainWindow.cpp" line="442"/>
+        <location filename="../ui/main/MainWindow.cpp" line="427"/>
+        <location filename="../ui/main/MainWindow.cpp" line="452"/>
         <source>quit</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="438"/>
         <source>Unwritten changes</source>
         <translation>未書込みの変更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
@@ -9498,14 +9498,7 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
-        <source>Unit %1 ended %2, but its result is not in the results database: %3
-Nothing is tested until it is recorded. The station tries again by itself (next in %4 s); keep the unit aside.</source>
-        <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
-記録されるまで試験しません。ステーションが自動で再試行します（%4 秒後）。この製品は別に置いてください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
@@ -9514,23 +9507,30 @@ Recorded at %2, after the results database came back.</source>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="154"/>
         <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="377"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="376"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <source>Unit %1 ended %2, but its result is not in the results database: %3
+Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
+        <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
+記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="383"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
@@ -14117,63 +14117,63 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="16"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="92"/>
         <source>STOP ALL</source>
         <translation>全停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="20"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>バス上の全ドライバを一斉に停止し (%1)、各ドライバの停止を確認します。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="87"/>
         <source>STOPPING…</source>
         <translation>停止中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>%1 台のドライバへの停止ブロードキャストに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="106"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>全ドライバに停止を送信しました。バス上に既知のドライバがないため、停止は確認していません。確認するにはバスをスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="97"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="114"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>局番 %1: %2 s 後に停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="100"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>局番 %1: まだ運転中 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>局番 %1: 応答なし、停止未確認</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="135"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全停止: 停止ブロードキャストに失敗しました</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="136"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全停止: 停止を送信、ドライバは未確認</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="137"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全停止: 全ドライバ停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="121"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="138"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全停止: 停止が確認できないドライバがあります</translation>
     </message>

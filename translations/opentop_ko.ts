@@ -7665,33 +7665,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="54"/>
+        <location filename="../ui/main/MainWindow.cpp" line="55"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="138"/>
+        <location filename="../ui/main/MainWindow.cpp" line="139"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1에 연결하는 중… (%2에 아직 연결되어 있음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="201"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>연결됨: %1 (새 연결 실패: %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="218"/>
         <source>Cannot connect</source>
         <translation>연결할 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7700,76 @@ Still connected to %2; nothing was changed.</source>
 %2에 아직 연결되어 있습니다. 아무것도 변경하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="208"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Not connected: %1</source>
         <translation>연결 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="269"/>
+        <location filename="../ui/main/MainWindow.cpp" line="279"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="300"/>
-        <location filename="../ui/main/MainWindow.cpp" line="302"/>
+        <location filename="../ui/main/MainWindow.cpp" line="310"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connection lost: %1</source>
         <translation>연결 끊김: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="307"/>
+        <location filename="../ui/main/MainWindow.cpp" line="317"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 시뮬레이션 버스 (실제 하드웨어 없음) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="308"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="309"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>Connecting to %1…</source>
         <translation>%1에 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="329"/>
+        <location filename="../ui/main/MainWindow.cpp" line="339"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="336"/>
+        <location filename="../ui/main/MainWindow.cpp" line="346"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="364"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="414"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="401"/>
+        <location filename="../ui/main/MainWindow.cpp" line="411"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
-        <location filename="../ui/main/MainWindow.cpp" line="442"/>
+        <location filename="../ui/main/MainWindow.cpp" line="427"/>
+        <location filename="../ui/main/MainWindow.cpp" line="452"/>
         <source>quit</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="438"/>
         <source>Unwritten changes</source>
         <translation>쓰지 않은 변경 사항</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
@@ -9498,14 +9498,7 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
-        <source>Unit %1 ended %2, but its result is not in the results database: %3
-Nothing is tested until it is recorded. The station tries again by itself (next in %4 s); keep the unit aside.</source>
-        <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
-기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%4초 후). 이 제품은 따로 두십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
@@ -9514,23 +9507,30 @@ Recorded at %2, after the results database came back.</source>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="154"/>
         <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="377"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="376"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <source>Unit %1 ended %2, but its result is not in the results database: %3
+Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
+        <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
+기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="383"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
@@ -14117,63 +14117,63 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="16"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="92"/>
         <source>STOP ALL</source>
         <translation>전체 정지</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="20"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>버스의 모든 드라이버를 한 번에 정지한 뒤(%1) 각 드라이버가 정지했는지 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="87"/>
         <source>STOPPING…</source>
         <translation>정지 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>드라이버 %1대에 보낸 정지 브로드캐스트 실패: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="106"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>모든 드라이버에 정지를 보냈습니다. 버스에 알려진 드라이버가 없어 확인하지 않았습니다. 확인하려면 버스를 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="97"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="114"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>국번 %1: %2 s 후 정지</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="100"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>국번 %1: 아직 운전 중 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>국번 %1: 응답 없음, 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="135"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>전체 정지: 정지 브로드캐스트 실패</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="136"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>전체 정지: 정지 보냄, 확인한 드라이버 없음</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="137"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>전체 정지: 모든 드라이버 정지</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="121"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="138"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>전체 정지: 정지 확인되지 않은 드라이버 있음</translation>
     </message>

@@ -7665,33 +7665,33 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="54"/>
+        <location filename="../ui/main/MainWindow.cpp" line="55"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="138"/>
+        <location filename="../ui/main/MainWindow.cpp" line="139"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在连接 %1…（仍连接着 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="201"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已连接：%1（新连接失败：%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="218"/>
         <source>Cannot connect</source>
         <translation>无法连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7700,76 @@ Still connected to %2; nothing was changed.</source>
 仍连接着 %2；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="208"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Not connected: %1</source>
         <translation>未连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="269"/>
+        <location filename="../ui/main/MainWindow.cpp" line="279"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信组：%1（总线 › 通信组）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="300"/>
-        <location filename="../ui/main/MainWindow.cpp" line="302"/>
+        <location filename="../ui/main/MainWindow.cpp" line="310"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connection lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="307"/>
+        <location filename="../ui/main/MainWindow.cpp" line="317"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模拟总线（无硬件）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="308"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="309"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="329"/>
+        <location filename="../ui/main/MainWindow.cpp" line="339"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="336"/>
+        <location filename="../ui/main/MainWindow.cpp" line="346"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="364"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="414"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="401"/>
+        <location filename="../ui/main/MainWindow.cpp" line="411"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
-        <location filename="../ui/main/MainWindow.cpp" line="442"/>
+        <location filename="../ui/main/MainWindow.cpp" line="427"/>
+        <location filename="../ui/main/MainWindow.cpp" line="452"/>
         <source>quit</source>
         <translation>退出</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="438"/>
         <source>Unwritten changes</source>
         <translation>未写入的修改</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
@@ -9498,14 +9498,7 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
-        <source>Unit %1 ended %2, but its result is not in the results database: %3
-Nothing is tested until it is recorded. The station tries again by itself (next in %4 s); keep the unit aside.</source>
-        <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
-记录完成前不进行任何测试。工作站会自动重试（%4 秒后）；请将此产品放在一边。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
@@ -9514,23 +9507,30 @@ Recorded at %2, after the results database came back.</source>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="154"/>
         <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="377"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="376"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <source>Unit %1 ended %2, but its result is not in the results database: %3
+Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
+        <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
+记录完成前不进行任何测试。工作站会自动重试（下次 %4）；请将此产品放在一边。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="383"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
@@ -14117,63 +14117,63 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="16"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="92"/>
         <source>STOP ALL</source>
         <translation>全部停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="20"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>立即停止总线上的所有驱动器（%1），然后检查每台是否已停止。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="87"/>
         <source>STOPPING…</source>
         <translation>正在停止…</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>向 %1 台驱动器广播停止失败：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="106"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>已向所有驱动器发送停止。总线上没有已知的驱动器，因此未检查任何驱动器；请扫描总线以便进行检查。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="97"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="114"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>站号 %1：%2 s 后停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="100"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>站号 %1：仍在运行（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>站号 %1：无应答，未确认已停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="135"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全部停止：停止广播失败</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="136"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全部停止：已发送停止，未检查驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="137"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全部停止：所有驱动器已停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="121"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="138"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全部停止：并非所有驱动器都已确认停止</translation>
     </message>

@@ -7665,33 +7665,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="54"/>
+        <location filename="../ui/main/MainWindow.cpp" line="55"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="138"/>
+        <location filename="../ui/main/MainWindow.cpp" line="139"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在連線至 %1… (仍連線於 %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="200"/>
+        <location filename="../ui/main/MainWindow.cpp" line="201"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已連線：%1 (新連線失敗：%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
-        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="218"/>
         <source>Cannot connect</source>
         <translation>無法連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7700,76 @@ Still connected to %2; nothing was changed.</source>
 仍連線於 %2；未做任何變更。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
-        <location filename="../ui/main/MainWindow.cpp" line="330"/>
+        <location filename="../ui/main/MainWindow.cpp" line="208"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Not connected: %1</source>
         <translation>未連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="269"/>
+        <location filename="../ui/main/MainWindow.cpp" line="279"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="300"/>
-        <location filename="../ui/main/MainWindow.cpp" line="302"/>
+        <location filename="../ui/main/MainWindow.cpp" line="310"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
         <source>Connection lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="307"/>
+        <location filename="../ui/main/MainWindow.cpp" line="317"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模擬匯流排 (無實體硬體) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="308"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="309"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>Connecting to %1…</source>
         <translation>正在連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="329"/>
+        <location filename="../ui/main/MainWindow.cpp" line="339"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="336"/>
+        <location filename="../ui/main/MainWindow.cpp" line="346"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="364"/>
+        <location filename="../ui/main/MainWindow.cpp" line="374"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="394"/>
         <location filename="../ui/main/MainWindow.cpp" line="404"/>
+        <location filename="../ui/main/MainWindow.cpp" line="414"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="401"/>
+        <location filename="../ui/main/MainWindow.cpp" line="411"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="417"/>
-        <location filename="../ui/main/MainWindow.cpp" line="442"/>
+        <location filename="../ui/main/MainWindow.cpp" line="427"/>
+        <location filename="../ui/main/MainWindow.cpp" line="452"/>
         <source>quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="438"/>
         <source>Unwritten changes</source>
         <translation>未寫入的變更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
@@ -9498,14 +9498,7 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
-        <source>Unit %1 ended %2, but its result is not in the results database: %3
-Nothing is tested until it is recorded. The station tries again by itself (next in %4 s); keep the unit aside.</source>
-        <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
-記錄完成前不會進行任何測試。工作站會自動重試（%4 秒後）；請將此產品放在一旁。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
@@ -9514,23 +9507,30 @@ Recorded at %2, after the results database came back.</source>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="154"/>
         <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="377"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="376"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <source>Unit %1 ended %2, but its result is not in the results database: %3
+Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
+        <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
+記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="383"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
@@ -14117,63 +14117,63 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StopAllButton</name>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="15"/>
-        <location filename="../ui/run/StopAllButton.cpp" line="75"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="16"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="92"/>
         <source>STOP ALL</source>
         <translation>全部停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="19"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="20"/>
         <source>Stops every drive on the bus at once (%1), then checks that each has stopped.</source>
         <translation>立即停止匯流排上的所有驅動器 (%1)，然後確認每台均已停止。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="70"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="87"/>
         <source>STOPPING…</source>
         <translation>停止中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="86"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
         <source>The stop broadcast to %1 drives FAILED: %2</source>
         <translation>對 %1 驅動器的停止廣播「失敗」：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="89"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="106"/>
         <source>Stop sent to every drive. No drives are known on the bus, so none was checked; scan the bus to have them checked.</source>
         <translation>已對所有驅動器送出停止指令。匯流排上沒有已知的驅動器，因此未確認任何驅動器；請掃描匯流排以便確認。</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="97"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="114"/>
         <source>Machine number %1: stopped after %2 s</source>
         <translation>機號 %1：%2 s 後停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="100"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="117"/>
         <source>Machine number %1: STILL RUNNING (%2)</source>
         <translation>機號 %1：仍在運轉 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="103"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
         <source>Machine number %1: NO ANSWER, not confirmed stopped</source>
         <translation>機號 %1：無回應，未確認停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="118"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="135"/>
         <source>STOP ALL: the stop broadcast FAILED</source>
         <translation>全部停止：停止廣播「失敗」</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="119"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="136"/>
         <source>STOP ALL: stop sent, no drive checked</source>
         <translation>全部停止：已送出停止指令，未確認任何驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="120"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="137"/>
         <source>STOP ALL: every drive stopped</source>
         <translation>全部停止：所有驅動器均已停止</translation>
     </message>
     <message>
-        <location filename="../ui/run/StopAllButton.cpp" line="121"/>
+        <location filename="../ui/run/StopAllButton.cpp" line="138"/>
         <source>STOP ALL: not every drive is confirmed stopped</source>
         <translation>全部停止：並非所有驅動器都已確認停止</translation>
     </message>

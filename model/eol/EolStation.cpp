@@ -242,6 +242,23 @@ void EolStation::finished(const UnitRecord& record)
 {
     m_unconfirmed = m_run ? m_run->unconfirmedStops() : QStringList();
     m_storeError = m_run ? m_run->storeError() : QString();
+    // A verdict the database does not hold is not a result yet: kept, tried again, and the
+    // station tests nothing meanwhile. (A unit never begun sent nothing: nothing to keep.)
+    if (!m_storeError.isEmpty() && !record.id.isEmpty()) {
+        m_unsaved = record;
+        m_retryDelayS = 1;
+        scheduleRetry();
+    } else {
+        count(record);
+    }
+    m_last.prepend(record);
+    if (m_last.size() > kLastUnits)
+        m_last.removeLast();
+    emit unitFinished(record);
+}
+
+void EolStation::count(const UnitRecord& record)
+{
     if (record.status == UnitStatus::Pass || record.status == UnitStatus::Fail) {
         ++m_counters.tested;
         record.isPass() ? ++m_counters.passed : ++m_counters.failed;
@@ -251,17 +268,6 @@ void EolStation::finished(const UnitRecord& record)
             m_counters.firstPassed += record.isPass() ? 1 : 0;
         }
     }
-    // A verdict the database does not hold is not a result yet: kept, tried again, and the
-    // station tests nothing meanwhile. (A unit never begun sent nothing: nothing to keep.)
-    if (!m_storeError.isEmpty() && !record.id.isEmpty()) {
-        m_unsaved = record;
-        m_retryDelayS = 1;
-        scheduleRetry();
-    }
-    m_last.prepend(record);
-    if (m_last.size() > kLastUnits)
-        m_last.removeLast();
-    emit unitFinished(record);
 }
 
 int EolStation::nextRetrySeconds() const
@@ -289,6 +295,7 @@ void EolStation::retryUnsavedNow()
             emit unsavedResultChanged(false, error);
             return;
         }
+        count(*m_unsaved); // the screen's counters hold what the database holds
         m_unsaved.reset();
         m_storeError.clear();
         emit unsavedResultChanged(true, QString());

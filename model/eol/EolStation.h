@@ -109,6 +109,7 @@ signals:
 private:
     void finished(const UnitRecord& record);
     void scheduleRetry();
+    void count(const UnitRecord& record); // a recorded verdict, into this shift's counters
 
     Recipe m_recipe;
     bool m_hasRecipe = false;

@@ -345,9 +345,12 @@ void ProductionView::showNotRecorded()
         tr("NOT RECORDED"), QStringLiteral("#b3261e"),
         tr("Unit %1 ended %2, but its result is not in the results database: %3\n"
            "Nothing is tested until it is recorded. The station tries again by itself "
-           "(next in %4 s); keep the unit aside.")
+           "(next try at %4); keep the unit aside.")
             .arg(unit.serial, unitStatusName(unit.status).toUpper(), m_station->storeError())
-            .arg(m_station->nextRetrySeconds()));
+            .arg(QTime::currentTime()
+                     .addSecs(m_station->nextRetrySeconds())
+                     .toString(QStringLiteral("HH:mm:ss"))));
+    refreshCounters();
     m_serial->setEnabled(false);
 }
 
@@ -365,6 +368,7 @@ void ProductionView::unsavedResultChanged(bool recorded)
                             .arg(unit.failureReason.isEmpty() ? tr("Unit %1").arg(unit.serial)
                                                               : unit.failureReason,
                                  QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))));
+    refreshCounters();
     refreshRecipe();
     focusSerial();
 }

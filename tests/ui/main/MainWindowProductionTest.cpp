@@ -254,6 +254,11 @@ TEST_F(MainWindowProductionTest, APassTheDatabaseDidNotTakeIsShownNotRecordedUnt
         << qPrintable(view->reasonLabel()->text());
     EXPECT_TRUE(view->verdictLabel()->styleSheet().contains(QStringLiteral("#b3261e")));
     EXPECT_FALSE(view->serialField()->isEnabled()) << "nothing is tested while a result waits";
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("next try at ")))
+        << qPrintable(view->reasonLabel()->text());
+    // The counters hold what the database holds.
+    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 0 ")))
+        << qPrintable(view->countersLabel()->text());
     ASSERT_EQ(view->unitsTable()->rowCount(), 1);
     EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS, NOT RECORDED"));
     EXPECT_EQ(speedOf(1), 0);
@@ -275,6 +280,8 @@ TEST_F(MainWindowProductionTest, APassTheDatabaseDidNotTakeIsShownNotRecordedUnt
     EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS"));
     EXPECT_TRUE(view->serialField()->isEnabled());
     EXPECT_FALSE(station->hasUnsavedResult());
+    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 1 · passed 1")))
+        << qPrintable(view->countersLabel()->text());
     const auto database = ResultDatabase::open(url, &error);
     ASSERT_TRUE(database) << qPrintable(error);
     const auto history = ResultQueries(*database).history(QStringLiteral("SN-PG1"), &error);
