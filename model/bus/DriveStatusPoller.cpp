@@ -230,13 +230,15 @@ void DriveStatusPoller::afterFreshCycle(QObject* context, std::function<void()> 
         then();
     };
     auto connection = std::make_shared<QMetaObject::Connection>();
-    *connection =
-        connect(this, &DriveStatusPoller::cycleFinished, context, [connection, waitFor, finish] {
-            if (--*waitFor > 0)
-                return;
-            QObject::disconnect(*connection);
-            finish();
-        });
+    *connection = connect(this, &DriveStatusPoller::cycleFinished, context,
+                          [connection, waitFor, finish, context] {
+                              if (--*waitFor > 0)
+                                  return;
+                              QObject::disconnect(*connection);
+                              // Not from inside the emit: what follows may delete this poller (a
+                              // disconnect tears the bus down).
+                              QMetaObject::invokeMethod(context, finish, Qt::QueuedConnection);
+                          });
     QTimer::singleShot(limitMs, context, [connection, finish] {
         QObject::disconnect(*connection);
         finish();
