@@ -189,9 +189,15 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
         err << tr("results database: %1; nothing was sent").arg(opened.error) << Qt::endl;
         return ExitCommunication;
     }
-    if (opened.interrupted > 0)
-        err << tr("note: %1 unit(s) this station left unfinished are now recorded as interrupted")
-                   .arg(opened.interrupted)
+    for (const StationLease::Leftover& left : opened.interrupted)
+        err << tr("note: unit %1 (begun %2) was left unfinished by a station process that is "
+                  "gone; it is now recorded as interrupted. Check that its motor is stopped.")
+                   .arg(left.serial, left.started)
+            << Qt::endl;
+    if (opened.waiting > 0)
+        err << tr("note: %1 result(s) kept on this station could not be sent to the results "
+                  "database yet")
+                   .arg(opened.waiting)
             << Qt::endl;
 
     if (!context.connectBus())
@@ -289,7 +295,8 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
                       {QStringLiteral("status"), unitStatusName(record.status)},
                       {QStringLiteral("id"), record.id},
                       {QStringLiteral("seconds"), eol.elapsedMs() / 1000.0},
-                      {QStringLiteral("recorded"), eol.storeError().isEmpty()}};
+                      {QStringLiteral("recorded"), eol.storeError().isEmpty()},
+                      {QStringLiteral("spooled"), eol.spooled()}};
         if (!record.failureReason.isEmpty())
             o.insert(QStringLiteral("reason"), record.failureReason);
         if (!eol.unconfirmedStops().isEmpty())
@@ -306,6 +313,11 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     }
     if (!eol.storeError().isEmpty())
         err << tr("the result was NOT recorded: %1").arg(eol.storeError()) << Qt::endl;
+    else if (eol.spooled())
+        err << tr("the results database did not answer: the result is kept on this station "
+                  "(%1) and sent when a station program next reaches the database")
+                   .arg(QDir::toNativeSeparators(writer.spoolPath()))
+            << Qt::endl;
     for (const QString& drive : eol.unconfirmedStops())
         err << tr("WARNING: motor not confirmed stopped: %1").arg(drive) << Qt::endl;
 

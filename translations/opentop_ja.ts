@@ -5610,53 +5610,53 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>送信前に製品を記録しています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="62"/>
+        <location filename="../model/eol/EolRun.cpp" line="63"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果データベースに製品を記録できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="91"/>
+        <location filename="../model/eol/EolRun.cpp" line="92"/>
         <source>the recipe has no drives</source>
         <translation>レシピにドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="104"/>
+        <location filename="../model/eol/EolRun.cpp" line="105"/>
         <source>the recipe is not valid: %1</source>
         <translation>レシピが無効です: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="110"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: この製品の %2 の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="127"/>
+        <location filename="../model/eol/EolRun.cpp" line="128"/>
         <source>cancelled by the operator</source>
         <translation>作業者によるキャンセル</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="136"/>
+        <location filename="../model/eol/EolRun.cpp" line="137"/>
         <source>the connection was lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="142"/>
-        <location filename="../model/eol/EolRun.cpp" line="149"/>
+        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="146"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="184"/>
+        <location filename="../model/eol/EolRun.cpp" line="185"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="193"/>
+        <location filename="../model/eol/EolRun.cpp" line="194"/>
         <source>recording the result</source>
         <translation>結果を記録しています</translation>
     </message>
@@ -5751,42 +5751,52 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
     <message>
         <location filename="../cli/EolRunCommand.cpp" line="193"/>
-        <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
-        <translation>注: このステーションで未完了だった製品 %1 台を中断として記録しました</translation>
+        <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
+        <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
-        <location filename="../cli/EolRunCommand.cpp" line="250"/>
+        <location filename="../cli/EolRunCommand.cpp" line="198"/>
+        <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
+        <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="235"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="279"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="302"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="315"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="310"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="322"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -5818,62 +5828,62 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="148"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="145"/>
+        <location filename="../model/eol/EolStation.cpp" line="168"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <location filename="../model/eol/EolStation.cpp" line="170"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>接続できません（%1）。自動で再試行中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="178"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="182"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="164"/>
+        <location filename="../model/eol/EolStation.cpp" line="187"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="173"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <location filename="../model/eol/EolStation.cpp" line="198"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="181"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="185"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="203"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
@@ -7670,28 +7680,28 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="139"/>
+        <location filename="../ui/main/MainWindow.cpp" line="140"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="162"/>
+        <location filename="../ui/main/MainWindow.cpp" line="163"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1 に接続中…（%2 には接続したまま）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="201"/>
+        <location filename="../ui/main/MainWindow.cpp" line="202"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>接続済み: %1（新しい接続は失敗しました: %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
-        <location filename="../ui/main/MainWindow.cpp" line="218"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Cannot connect</source>
         <translation>接続できません</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7710,76 @@ Still connected to %2; nothing was changed.</source>
 %2 に接続したままです。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="208"/>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="209"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Not connected: %1</source>
         <translation>未接続: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="279"/>
+        <location filename="../ui/main/MainWindow.cpp" line="280"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信グループ: %1（バス › 通信グループ）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="310"/>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="311"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="317"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — シミュレーションバス（ハードウェアなし）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>Connecting to %1…</source>
         <translation>%1 に接続中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="339"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="346"/>
+        <location filename="../ui/main/MainWindow.cpp" line="347"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="375"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="414"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="411"/>
+        <location filename="../ui/main/MainWindow.cpp" line="412"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="427"/>
-        <location filename="../ui/main/MainWindow.cpp" line="452"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="453"/>
         <source>quit</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="438"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>Unwritten changes</source>
         <translation>未書込みの変更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
@@ -9204,22 +9214,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生産モード（出荷検査）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>出荷検査ステーションの作業者画面。元に戻すまでパラメータは編集できません (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>&amp;Full screen</source>
         <translation>全画面表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <source>&amp;Station name…</source>
+        <translation>ステーション名(&amp;S)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <source>The name this end-of-line station records with every unit</source>
+        <translation>この出荷検査ステーションが各ユニットに記録する名前</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9228,32 +9248,53 @@ No unit can be tested until results can be recorded. The station tries again by 
 結果を記録できるようになるまで、製品は試験できません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <source>Station name</source>
+        <translation>ステーション名</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <source>The name this station records with every unit (each station of a line needs its own):</source>
+        <translation>このステーションが各ユニットに記録する名前（ラインの各ステーションにそれぞれ別の名前が必要です）:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <source>A station needs a name.</source>
+        <translation>ステーションには名前が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <source>A unit is being tested: change the name once it is finished.</source>
+        <translation>ユニットを検査中です。完了してから名前を変更してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
         <source>Production mode</source>
         <translation>生産モード</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>製品を試験中です。エンジニアリングモードに戻る前に、キャンセル (Esc) するか試験の終了を待ってください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
         <source>Results database</source>
         <translation>結果データベース</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="149"/>
         <source>A unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>製品 %1 を試験中です。キャンセルして「%2」を実行しますか？ 先にモータを停止し、製品は中止として記録します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="162"/>
         <source>cancelled to %1</source>
         <translation>「%1」のためキャンセル</translation>
     </message>
@@ -9261,47 +9302,62 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>このレシピで生産モード（出荷検査ステーション）で起動します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>生産モードの個別値（シリアル番号別 CSV）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>生産モードの結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="39"/>
+        <source>This station&apos;s name in the results (default: as set in the program, else the computer&apos;s name); not saved.</source>
+        <translation>結果に記録するこのステーションの名前（既定: プログラムで設定した名前、なければコンピューター名）。保存されません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="41"/>
+        <source>NAME</source>
+        <translation>名前</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="42"/>
         <source>Start full screen.</source>
         <translation>全画面で起動します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
-        <source>--units and --results-db go with --production RECIPE</source>
-        <translation>--units と --results-db は --production RECIPE と一緒に使用します</translation>
+        <location filename="../app/gui/ProductionOptions.cpp" line="50"/>
+        <source>--units, --results-db and --station go with --production RECIPE</source>
+        <translation>--units、--results-db、--station は --production RECIPE と一緒に使います</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="59"/>
+        <source>--station needs a name</source>
+        <translation>--station には名前が必要です</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="64"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1 は実行できません:
@@ -9321,77 +9377,77 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="74"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Operator:</source>
         <translation>作業者:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="93"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="155"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="166"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="168"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="185"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="197"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="186"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9400,147 +9456,175 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="206"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="235"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>試験 %1 · 合格 %2 · 不合格 %3 · 直行率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="264"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
+        <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1、未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（このステーションに保管）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
         <source>NOT RECORDED</source>
         <translation>未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/ProductionView.cpp" line="416"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <source>it does not answer</source>
+        <translation>データベースが応答しません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="423"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="165"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="330"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="403"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11853,9 +11937,41 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="151"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果データベースのスキーマバージョン %1 は、このプログラムが対応するバージョン (%2) より新しいです: このステーションの OpenTOP を更新してください。何も書き込んでいません</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSink</name>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="135"/>
+        <source>the results database is not open</source>
+        <translation>結果データベースが開かれていません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="204"/>
+        <source>the results database refuses unit %1 (serial %2): %3</source>
+        <translation>結果データベースがユニット %1（シリアル番号 %2）を拒否しています: %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSpool</name>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="66"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="103"/>
+        <source>the station&apos;s spool %1: %2</source>
+        <translation>ステーションの保管ファイル %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="70"/>
+        <source>its folder cannot be made</source>
+        <translation>フォルダーを作成できません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="130"/>
+        <source>the station&apos;s spool %1: entry %2 cannot be read (%3)</source>
+        <translation>ステーションの保管ファイル %1: 項目 %2 を読み取れません（%3）</translation>
     </message>
 </context>
 <context>
@@ -11871,22 +11987,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>製品にはシリアル番号が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="158"/>
+        <location filename="../model/eol/ResultStore.cpp" line="160"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>製品の終了は pass、fail、aborted のいずれかです（%1 は不可）</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="181"/>
+        <location filename="../model/eol/ResultStore.cpp" line="190"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>製品 %1（シリアル %2）は結果データベースで開始されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="183"/>
+        <location filename="../model/eol/ResultStore.cpp" line="192"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>製品 %1（シリアル %2）はすでに %3 として記録されています。その記録を保持します</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="201"/>
+        <location filename="../model/eol/ResultStore.cpp" line="210"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>製品 %1（シリアル %2）は結果データベースで実行中ではありません: 開始されていないか、すでに終了または中断としてマークされています</translation>
     </message>
@@ -11894,43 +12010,34 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="44"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>データベースが指定されていません: ファイルまたは postgresql:// URL を指定してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="52"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>不明なデータベース URL &quot;%1&quot;: ファイルパス、sqlite:PATH、postgresql://user@host/database のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="56"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: にはファイルパスが必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="85"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; のホストに閉じ括弧 ] がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="113"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>データベース URL の不明な接続オプション &quot;%1&quot;。既知: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="136"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>データベース URL のポート &quot;%1&quot; が 1–65535 の数値ではありません</translation>
-    </message>
-</context>
-<context>
-    <name>opentop::ResultWriter</name>
-    <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="171"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="189"/>
-        <source>the results database is not open</source>
-        <translation>結果データベースが開いていません</translation>
     </message>
 </context>
 <context>

@@ -5610,53 +5610,53 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>전송하기 전에 제품을 기록하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="62"/>
+        <location filename="../model/eol/EolRun.cpp" line="63"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>결과 데이터베이스에 제품을 기록할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="91"/>
+        <location filename="../model/eol/EolRun.cpp" line="92"/>
         <source>the recipe has no drives</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="104"/>
+        <location filename="../model/eol/EolRun.cpp" line="105"/>
         <source>the recipe is not valid: %1</source>
         <translation>레시피가 올바르지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="110"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: 이 제품의 %2 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="127"/>
+        <location filename="../model/eol/EolRun.cpp" line="128"/>
         <source>cancelled by the operator</source>
         <translation>작업자가 취소함</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="136"/>
+        <location filename="../model/eol/EolRun.cpp" line="137"/>
         <source>the connection was lost: %1</source>
         <translation>연결이 끊겼습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="142"/>
-        <location filename="../model/eol/EolRun.cpp" line="149"/>
+        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="146"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1 failed</source>
         <translation>%1 실패</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="184"/>
+        <location filename="../model/eol/EolRun.cpp" line="185"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="193"/>
+        <location filename="../model/eol/EolRun.cpp" line="194"/>
         <source>recording the result</source>
         <translation>결과를 기록하는 중</translation>
     </message>
@@ -5751,42 +5751,52 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
     <message>
         <location filename="../cli/EolRunCommand.cpp" line="193"/>
-        <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
-        <translation>참고: 이 스테이션에서 끝나지 않은 제품 %1대를 중단됨으로 기록했습니다</translation>
+        <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
+        <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
-        <location filename="../cli/EolRunCommand.cpp" line="250"/>
+        <location filename="../cli/EolRunCommand.cpp" line="198"/>
+        <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
+        <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="235"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="279"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="302"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="315"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="310"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="322"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -5818,62 +5828,62 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="148"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="145"/>
+        <location filename="../model/eol/EolStation.cpp" line="168"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <location filename="../model/eol/EolStation.cpp" line="170"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="178"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="182"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="164"/>
+        <location filename="../model/eol/EolStation.cpp" line="187"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="173"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <location filename="../model/eol/EolStation.cpp" line="198"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="181"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="185"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="203"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
@@ -7670,28 +7680,28 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="139"/>
+        <location filename="../ui/main/MainWindow.cpp" line="140"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="162"/>
+        <location filename="../ui/main/MainWindow.cpp" line="163"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1에 연결하는 중… (%2에 아직 연결되어 있음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="201"/>
+        <location filename="../ui/main/MainWindow.cpp" line="202"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>연결됨: %1 (새 연결 실패: %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
-        <location filename="../ui/main/MainWindow.cpp" line="218"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Cannot connect</source>
         <translation>연결할 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7710,76 @@ Still connected to %2; nothing was changed.</source>
 %2에 아직 연결되어 있습니다. 아무것도 변경하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="208"/>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="209"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Not connected: %1</source>
         <translation>연결 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="279"/>
+        <location filename="../ui/main/MainWindow.cpp" line="280"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="310"/>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="311"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connection lost: %1</source>
         <translation>연결 끊김: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="317"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 시뮬레이션 버스 (실제 하드웨어 없음) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>Connecting to %1…</source>
         <translation>%1에 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="339"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="346"/>
+        <location filename="../ui/main/MainWindow.cpp" line="347"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="375"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="414"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="411"/>
+        <location filename="../ui/main/MainWindow.cpp" line="412"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="427"/>
-        <location filename="../ui/main/MainWindow.cpp" line="452"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="453"/>
         <source>quit</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="438"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>Unwritten changes</source>
         <translation>쓰지 않은 변경 사항</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
@@ -9204,22 +9214,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>생산 모드(&amp;P) (출하 검사)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>출하 검사 스테이션의 작업자 화면. 다시 전환할 때까지 파라미터 편집 불가(Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>&amp;Full screen</source>
         <translation>전체 화면(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <source>&amp;Station name…</source>
+        <translation>스테이션 이름(&amp;S)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <source>The name this end-of-line station records with every unit</source>
+        <translation>이 출하 검사 스테이션이 모든 유닛에 기록하는 이름</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9228,32 +9248,53 @@ No unit can be tested until results can be recorded. The station tries again by 
 결과를 기록할 수 있을 때까지 어떤 제품도 검사할 수 없습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <source>Station name</source>
+        <translation>스테이션 이름</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <source>The name this station records with every unit (each station of a line needs its own):</source>
+        <translation>이 스테이션이 모든 유닛에 기록하는 이름(한 라인의 각 스테이션은 고유한 이름이 필요합니다):</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <source>A station needs a name.</source>
+        <translation>스테이션에는 이름이 필요합니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <source>A unit is being tested: change the name once it is finished.</source>
+        <translation>유닛을 검사 중입니다: 완료된 후 이름을 변경하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
         <source>Production mode</source>
         <translation>생산 모드</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>제품 검사 중입니다. 엔지니어링 모드로 돌아가기 전에 검사를 취소(Esc)하거나 끝날 때까지 기다리십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
         <source>Results database</source>
         <translation>결과 데이터베이스</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="149"/>
         <source>A unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>제품 %1을(를) 검사 중입니다. 검사를 취소하고 %2하시겠습니까? 먼저 모터를 정지하며, 제품은 중지됨으로 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="162"/>
         <source>cancelled to %1</source>
         <translation>%1하기 위해 취소함</translation>
     </message>
@@ -9261,47 +9302,62 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>이 레시피로 생산 모드(출하 검사 스테이션)로 시작합니다.</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>생산 모드용 제품별 값(시리얼 번호별 CSV).</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>생산 모드용 결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="39"/>
+        <source>This station&apos;s name in the results (default: as set in the program, else the computer&apos;s name); not saved.</source>
+        <translation>결과에 기록되는 이 스테이션의 이름(기본값: 프로그램에서 설정한 이름, 없으면 컴퓨터 이름). 저장되지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="41"/>
+        <source>NAME</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="42"/>
         <source>Start full screen.</source>
         <translation>전체 화면으로 시작합니다.</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
-        <source>--units and --results-db go with --production RECIPE</source>
-        <translation>--units와 --results-db는 --production RECIPE와 함께 씁니다</translation>
+        <location filename="../app/gui/ProductionOptions.cpp" line="50"/>
+        <source>--units, --results-db and --station go with --production RECIPE</source>
+        <translation>--units, --results-db, --station은 --production RECIPE와 함께 사용합니다</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="59"/>
+        <source>--station needs a name</source>
+        <translation>--station에는 이름이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="64"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1을(를) 실행할 수 없습니다:
@@ -9321,77 +9377,77 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="74"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Operator:</source>
         <translation>작업자:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="93"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="155"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="166"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="168"/>
         <source>READY</source>
         <translation>준비 완료</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="185"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="197"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="186"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9400,147 +9456,175 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="206"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="235"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>검사 %1 · 합격 %2 · 불합격 %3 · 직행률 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="264"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
+        <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1, 기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1 (이 스테이션에 보관)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
         <source>NOT RECORDED</source>
         <translation>기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/ProductionView.cpp" line="416"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <source>it does not answer</source>
+        <translation>데이터베이스가 응답하지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="423"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="165"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="330"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="403"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11853,9 +11937,41 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="151"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>결과 데이터베이스의 스키마 버전 %1이(가) 이 프로그램이 아는 버전(%2)보다 새롭습니다: 이 스테이션의 OpenTOP을 업데이트하십시오. 아무것도 쓰지 않았습니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSink</name>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="135"/>
+        <source>the results database is not open</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="204"/>
+        <source>the results database refuses unit %1 (serial %2): %3</source>
+        <translation>결과 데이터베이스가 유닛 %1(일련번호 %2)을 거부합니다: %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSpool</name>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="66"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="103"/>
+        <source>the station&apos;s spool %1: %2</source>
+        <translation>스테이션 보관 파일 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="70"/>
+        <source>its folder cannot be made</source>
+        <translation>폴더를 만들 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="130"/>
+        <source>the station&apos;s spool %1: entry %2 cannot be read (%3)</source>
+        <translation>스테이션 보관 파일 %1: 항목 %2을(를) 읽을 수 없습니다(%3)</translation>
     </message>
 </context>
 <context>
@@ -11871,22 +11987,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>제품에는 시리얼 번호가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="158"/>
+        <location filename="../model/eol/ResultStore.cpp" line="160"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>제품은 pass, fail 또는 aborted로 끝나야 합니다. %1은(는) 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="181"/>
+        <location filename="../model/eol/ResultStore.cpp" line="190"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 시작된 적이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="183"/>
+        <location filename="../model/eol/ResultStore.cpp" line="192"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>제품 %1(시리얼 %2)은(는) 이미 %3(으)로 기록되어 있습니다. 기존 기록을 유지합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="201"/>
+        <location filename="../model/eol/ResultStore.cpp" line="210"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 진행 중이 아닙니다: 시작된 적이 없거나, 이미 끝났거나, 중단됨으로 표시되었습니다</translation>
     </message>
@@ -11894,43 +12010,34 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="44"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>데이터베이스가 지정되지 않았습니다: 파일 또는 postgresql:// URL을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="52"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>알 수 없는 데이터베이스 URL &quot;%1&quot;: 파일 경로, sqlite:PATH 또는 postgresql://user@host/database를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="56"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite:에는 파일 경로가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="85"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot;의 호스트에 닫는 ]가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="113"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>데이터베이스 URL에 알 수 없는 연결 옵션 &quot;%1&quot;; 알려진 옵션: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="136"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>데이터베이스 URL의 포트 &quot;%1&quot;이(가) 1–65535의 숫자가 아닙니다</translation>
-    </message>
-</context>
-<context>
-    <name>opentop::ResultWriter</name>
-    <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="171"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="189"/>
-        <source>the results database is not open</source>
-        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
 </context>
 <context>

@@ -5610,53 +5610,53 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>发送任何内容前正在记录产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="62"/>
+        <location filename="../model/eol/EolRun.cpp" line="63"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>结果数据库无法记录该产品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="91"/>
+        <location filename="../model/eol/EolRun.cpp" line="92"/>
         <source>the recipe has no drives</source>
         <translation>配方中没有驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="104"/>
+        <location filename="../model/eol/EolRun.cpp" line="105"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方无效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="110"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：该产品没有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="127"/>
+        <location filename="../model/eol/EolRun.cpp" line="128"/>
         <source>cancelled by the operator</source>
         <translation>已被操作员取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="136"/>
+        <location filename="../model/eol/EolRun.cpp" line="137"/>
         <source>the connection was lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="142"/>
-        <location filename="../model/eol/EolRun.cpp" line="149"/>
+        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="146"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1 failed</source>
         <translation>%1 失败</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="184"/>
+        <location filename="../model/eol/EolRun.cpp" line="185"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="193"/>
+        <location filename="../model/eol/EolRun.cpp" line="194"/>
         <source>recording the result</source>
         <translation>正在记录结果</translation>
     </message>
@@ -5751,42 +5751,52 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
     <message>
         <location filename="../cli/EolRunCommand.cpp" line="193"/>
-        <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
-        <translation>注意：本工位遗留的 %1 台未完成产品现已记录为已中断</translation>
+        <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
+        <translation>注意：单元 %1（开始于 %2）因工作站进程已结束而未完成，现已记录为“中断”。请确认其电机已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
-        <location filename="../cli/EolRunCommand.cpp" line="250"/>
+        <location filename="../cli/EolRunCommand.cpp" line="198"/>
+        <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
+        <translation>注意：本工作站保存的 %1 条结果尚未能发送到结果数据库</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="235"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="279"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="302"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="315"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="310"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="322"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
     </message>
@@ -5818,62 +5828,62 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="148"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="145"/>
+        <location filename="../model/eol/EolStation.cpp" line="168"/>
         <source>opening the results database</source>
         <translation>正在打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <location filename="../model/eol/EolStation.cpp" line="170"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>无法连接（%1）；正在自动重试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="178"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="182"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="164"/>
+        <location filename="../model/eol/EolStation.cpp" line="187"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在打开结果数据库；请稍后再试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="173"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <location filename="../model/eol/EolStation.cpp" line="198"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="181"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="185"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="203"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
@@ -7670,28 +7680,28 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="139"/>
+        <location filename="../ui/main/MainWindow.cpp" line="140"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="162"/>
+        <location filename="../ui/main/MainWindow.cpp" line="163"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在连接 %1…（仍连接着 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="201"/>
+        <location filename="../ui/main/MainWindow.cpp" line="202"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已连接：%1（新连接失败：%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
-        <location filename="../ui/main/MainWindow.cpp" line="218"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Cannot connect</source>
         <translation>无法连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7710,76 @@ Still connected to %2; nothing was changed.</source>
 仍连接着 %2；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="208"/>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="209"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Not connected: %1</source>
         <translation>未连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="279"/>
+        <location filename="../ui/main/MainWindow.cpp" line="280"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信组：%1（总线 › 通信组）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="310"/>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="311"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connection lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="317"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模拟总线（无硬件）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="339"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="346"/>
+        <location filename="../ui/main/MainWindow.cpp" line="347"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="375"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="414"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="411"/>
+        <location filename="../ui/main/MainWindow.cpp" line="412"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="427"/>
-        <location filename="../ui/main/MainWindow.cpp" line="452"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="453"/>
         <source>quit</source>
         <translation>退出</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="438"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>Unwritten changes</source>
         <translation>未写入的修改</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
@@ -9204,22 +9214,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生产模式（下线检测）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>下线检测工位的操作员界面；切换回来之前不能编辑参数（Ctrl+Shift+P）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>&amp;Full screen</source>
         <translation>全屏(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <source>&amp;Station name…</source>
+        <translation>工作站名称(&amp;S)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <source>The name this end-of-line station records with every unit</source>
+        <translation>本下线检测站记录在每个单元上的名称</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9228,32 +9248,53 @@ No unit can be tested until results can be recorded. The station tries again by 
 能够记录结果之前，无法测试任何产品。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <source>Station name</source>
+        <translation>工作站名称</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <source>The name this station records with every unit (each station of a line needs its own):</source>
+        <translation>本工作站记录在每个单元上的名称（同一产线的每个工作站需各有其名）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <source>A station needs a name.</source>
+        <translation>工作站需要名称。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <source>A unit is being tested: change the name once it is finished.</source>
+        <translation>正在检测单元：请在完成后再更改名称。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
         <source>Production mode</source>
         <translation>生产模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>正在测试一台产品。请先取消测试（Esc）或等待测试完成，再切换回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
         <source>Results database</source>
         <translation>结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="149"/>
         <source>A unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>正在测试产品 %1。取消测试并%2？会先停止其电机；该产品将记录为已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="162"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -9261,47 +9302,62 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>以生产模式（下线检测工位）启动，并使用该配方。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>生产模式下的单台数值（按序列号对应的 CSV）。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>生产模式的结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="39"/>
+        <source>This station&apos;s name in the results (default: as set in the program, else the computer&apos;s name); not saved.</source>
+        <translation>结果中本工作站的名称（默认：程序中设置的名称，否则为计算机名称）；不会保存。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="41"/>
+        <source>NAME</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="42"/>
         <source>Start full screen.</source>
         <translation>以全屏启动。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
-        <source>--units and --results-db go with --production RECIPE</source>
-        <translation>--units 和 --results-db 需与 --production RECIPE 一起使用</translation>
+        <location filename="../app/gui/ProductionOptions.cpp" line="50"/>
+        <source>--units, --results-db and --station go with --production RECIPE</source>
+        <translation>--units、--results-db 和 --station 须与 --production RECIPE 一起使用</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="59"/>
+        <source>--station needs a name</source>
+        <translation>--station 需要名称</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="64"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1 无法运行：
@@ -9321,77 +9377,77 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>单台数值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="74"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Operator:</source>
         <translation>操作员：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="93"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>扫描或输入序列号，然后按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消本台测试（Esc）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Now</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="155"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="166"/>
         <source>Unit %1: %2…</source>
         <translation>产品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="168"/>
         <source>READY</source>
         <translation>就绪</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="185"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="197"/>
         <source>Recipe not usable</source>
         <translation>配方不可用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="186"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9400,147 +9456,175 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="206"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版本 %2 — %n 台驱动器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;无：请打开该产品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="235"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工位 %1 · 结果：%2 · 单台数值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>loaded</source>
         <translation>已载入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已测 %1 · 合格 %2 · 不合格 %3 · 直通率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Per-unit value</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="264"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驱动器 %1：%2（%3–%4 %5）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>NOT STARTED</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>TESTING</source>
         <translation>测试中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
+        <translation>已保存在本工作站：结果服务器没有响应。服务器响应后会自动发送。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（保存在本工作站）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
         <source>NOT RECORDED</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 结果数据库恢复后，已于 %2 记录。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/ProductionView.cpp" line="416"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>本工作站保存了 %n 条结果，尚未存入结果数据库：%1。数据库响应后会按顺序自动发送。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <source>it does not answer</source>
+        <translation>数据库没有响应</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="423"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>单元 %1（开始于 %2）未完成：工作站在检测中停止。已记录为“中断”，请重新检测。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="165"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="330"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
 记录完成前不进行任何测试。工作站会自动重试（下次 %4）；请将此产品放在一边。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="403"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11853,9 +11937,41 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="151"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>结果数据库的架构版本为 %1，比本程序所知的（%2）更新：请更新本工位的 OpenTOP；未写入任何内容</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSink</name>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="135"/>
+        <source>the results database is not open</source>
+        <translation>结果数据库未打开</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="204"/>
+        <source>the results database refuses unit %1 (serial %2): %3</source>
+        <translation>结果数据库拒绝单元 %1（序列号 %2）：%3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSpool</name>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="66"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="103"/>
+        <source>the station&apos;s spool %1: %2</source>
+        <translation>工作站暂存文件 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="70"/>
+        <source>its folder cannot be made</source>
+        <translation>无法创建其文件夹</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="130"/>
+        <source>the station&apos;s spool %1: entry %2 cannot be read (%3)</source>
+        <translation>工作站暂存文件 %1：第 %2 条无法读取（%3）</translation>
     </message>
 </context>
 <context>
@@ -11871,22 +11987,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>产品需要序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="158"/>
+        <location filename="../model/eol/ResultStore.cpp" line="160"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>产品的结束判定只能是 pass、fail 或 aborted，而不是 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="181"/>
+        <location filename="../model/eol/ResultStore.cpp" line="190"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>产品 %1（序列号 %2）从未在结果数据库中开始测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="183"/>
+        <location filename="../model/eol/ResultStore.cpp" line="192"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>产品 %1（序列号 %2）已记录为 %3；保留其记录</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="201"/>
+        <location filename="../model/eol/ResultStore.cpp" line="210"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>产品 %1（序列号 %2）在结果数据库中不处于进行中：从未开始，或已完成，或已标记为中断</translation>
     </message>
@@ -11894,43 +12010,34 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="44"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>未指定数据库：请指定文件或 postgresql:// URL</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="52"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>未知的数据库 URL &quot;%1&quot;：请使用文件路径、sqlite:PATH 或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="56"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: 需要文件路径</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="85"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; 中的主机缺少右括号 ]</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="113"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>数据库 URL 中有未知的连接选项 &quot;%1&quot;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="136"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>数据库 URL 中的端口 &quot;%1&quot; 不是 1 到 65535 的数字</translation>
-    </message>
-</context>
-<context>
-    <name>opentop::ResultWriter</name>
-    <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="171"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="189"/>
-        <source>the results database is not open</source>
-        <translation>结果数据库未打开</translation>
     </message>
 </context>
 <context>

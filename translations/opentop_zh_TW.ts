@@ -5610,53 +5610,53 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>傳送任何內容前正在記錄產品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="62"/>
+        <location filename="../model/eol/EolRun.cpp" line="63"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果資料庫無法記錄此產品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="91"/>
+        <location filename="../model/eol/EolRun.cpp" line="92"/>
         <source>the recipe has no drives</source>
         <translation>配方中沒有驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="104"/>
+        <location filename="../model/eol/EolRun.cpp" line="105"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方無效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="110"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：此產品沒有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="127"/>
+        <location filename="../model/eol/EolRun.cpp" line="128"/>
         <source>cancelled by the operator</source>
         <translation>已由作業員取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="136"/>
+        <location filename="../model/eol/EolRun.cpp" line="137"/>
         <source>the connection was lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="142"/>
-        <location filename="../model/eol/EolRun.cpp" line="149"/>
+        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="150"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="146"/>
+        <location filename="../model/eol/EolRun.cpp" line="147"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="184"/>
+        <location filename="../model/eol/EolRun.cpp" line="185"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="193"/>
+        <location filename="../model/eol/EolRun.cpp" line="194"/>
         <source>recording the result</source>
         <translation>正在記錄結果</translation>
     </message>
@@ -5751,42 +5751,52 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
     <message>
         <location filename="../cli/EolRunCommand.cpp" line="193"/>
-        <source>note: %1 unit(s) this station left unfinished are now recorded as interrupted</source>
-        <translation>注意：此工站有 %1 台未完成的產品，現已記錄為已中斷</translation>
+        <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
+        <translation>注意：單元 %1（開始於 %2）因工作站程序已結束而未完成，現已記錄為「中斷」。請確認其馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
-        <location filename="../cli/EolRunCommand.cpp" line="250"/>
+        <location filename="../cli/EolRunCommand.cpp" line="198"/>
+        <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
+        <translation>注意：本工作站保存的 %1 筆結果尚未能送到結果資料庫</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="235"/>
+        <location filename="../cli/EolRunCommand.cpp" line="256"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="255"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="279"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="302"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>rev. %1</source>
         <translation>版次 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="315"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果「未」記錄：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="310"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>結果資料庫沒有回應：結果已保存在本工作站（%1），下次工作站程式連上資料庫時會送出</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="322"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未確認馬達已停止：%1</translation>
     </message>
@@ -5818,62 +5828,62 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="148"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="145"/>
+        <location filename="../model/eol/EolStation.cpp" line="168"/>
         <source>opening the results database</source>
         <translation>正在開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="147"/>
+        <location filename="../model/eol/EolStation.cpp" line="170"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>無法連線（%1）；自動重試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="155"/>
+        <location filename="../model/eol/EolStation.cpp" line="178"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="159"/>
+        <location filename="../model/eol/EolStation.cpp" line="182"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="164"/>
+        <location filename="../model/eol/EolStation.cpp" line="187"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在開啟結果資料庫；請稍後再試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="173"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="175"/>
+        <location filename="../model/eol/EolStation.cpp" line="198"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="181"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="185"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="203"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
@@ -7670,28 +7680,28 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="139"/>
+        <location filename="../ui/main/MainWindow.cpp" line="140"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="162"/>
+        <location filename="../ui/main/MainWindow.cpp" line="163"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在連線至 %1… (仍連線於 %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="201"/>
+        <location filename="../ui/main/MainWindow.cpp" line="202"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已連線：%1 (新連線失敗：%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="204"/>
-        <location filename="../ui/main/MainWindow.cpp" line="218"/>
+        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Cannot connect</source>
         <translation>無法連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7700,76 +7710,76 @@ Still connected to %2; nothing was changed.</source>
 仍連線於 %2；未做任何變更。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="208"/>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="209"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Not connected: %1</source>
         <translation>未連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="279"/>
+        <location filename="../ui/main/MainWindow.cpp" line="280"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="310"/>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="311"/>
+        <location filename="../ui/main/MainWindow.cpp" line="313"/>
         <source>Connection lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="317"/>
+        <location filename="../ui/main/MainWindow.cpp" line="318"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模擬匯流排 (無實體硬體) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>Connecting to %1…</source>
         <translation>正在連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="339"/>
+        <location filename="../ui/main/MainWindow.cpp" line="340"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="346"/>
+        <location filename="../ui/main/MainWindow.cpp" line="347"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="374"/>
+        <location filename="../ui/main/MainWindow.cpp" line="375"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="404"/>
-        <location filename="../ui/main/MainWindow.cpp" line="414"/>
+        <location filename="../ui/main/MainWindow.cpp" line="405"/>
+        <location filename="../ui/main/MainWindow.cpp" line="415"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="411"/>
+        <location filename="../ui/main/MainWindow.cpp" line="412"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="427"/>
-        <location filename="../ui/main/MainWindow.cpp" line="452"/>
+        <location filename="../ui/main/MainWindow.cpp" line="428"/>
+        <location filename="../ui/main/MainWindow.cpp" line="453"/>
         <source>quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="438"/>
+        <location filename="../ui/main/MainWindow.cpp" line="439"/>
         <source>Unwritten changes</source>
         <translation>未寫入的變更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
@@ -9204,22 +9214,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="28"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生產模式 (終檢)(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="31"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>終檢工站的作業員畫面；切換回來之前無法編輯參數 (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="34"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
         <source>&amp;Full screen</source>
         <translation>全螢幕(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="46"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <source>&amp;Station name…</source>
+        <translation>工作站名稱(&amp;S)…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <source>The name this end-of-line station records with every unit</source>
+        <translation>本出廠檢測站記錄在每個單元上的名稱</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9228,32 +9248,53 @@ No unit can be tested until results can be recorded. The station tries again by 
 可記錄結果之前，無法測試任何產品。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <source>Station name</source>
+        <translation>工作站名稱</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <source>The name this station records with every unit (each station of a line needs its own):</source>
+        <translation>本工作站記錄在每個單元上的名稱（同一產線的每個工作站需各有其名）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <source>A station needs a name.</source>
+        <translation>工作站需要名稱。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <source>A unit is being tested: change the name once it is finished.</source>
+        <translation>正在檢測單元：請在完成後再變更名稱。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
         <source>Production mode</source>
         <translation>生產模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>有產品正在測試中。請先取消 (Esc) 或等待測試完成，再切換回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
         <source>Results database</source>
         <translation>結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="113"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="149"/>
         <source>A unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>產品 %1 正在測試中。要取消測試並%2嗎？會先停止其馬達，並將此產品記錄為已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="126"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="162"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -9261,47 +9302,62 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionOptions</name>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="31"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
         <source>Start in production mode (end-of-line station) with this recipe.</source>
         <translation>以此配方啟動生產模式 (終檢工站)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="32"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
         <source>RECIPE</source>
         <translation>RECIPE</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>Per-unit values (CSV by serial number) for production mode.</source>
         <translation>生產模式使用的單台數值 (依序號的 CSV)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="33"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="35"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
         <source>Results database for production mode: an SQLite file or postgresql://user@host/db.</source>
         <translation>生產模式的結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="36"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="37"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="39"/>
+        <source>This station&apos;s name in the results (default: as set in the program, else the computer&apos;s name); not saved.</source>
+        <translation>結果中本工作站的名稱（預設：程式中設定的名稱，否則為電腦名稱）；不會儲存。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="41"/>
+        <source>NAME</source>
+        <translation>名稱</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="42"/>
         <source>Start full screen.</source>
         <translation>以全螢幕啟動。</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="44"/>
-        <source>--units and --results-db go with --production RECIPE</source>
-        <translation>--units 與 --results-db 須搭配 --production RECIPE 使用</translation>
+        <location filename="../app/gui/ProductionOptions.cpp" line="50"/>
+        <source>--units, --results-db and --station go with --production RECIPE</source>
+        <translation>--units、--results-db 與 --station 須與 --production RECIPE 一起使用</translation>
     </message>
     <message>
-        <location filename="../app/gui/ProductionOptions.cpp" line="54"/>
+        <location filename="../app/gui/ProductionOptions.cpp" line="59"/>
+        <source>--station needs a name</source>
+        <translation>--station 需要名稱</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ProductionOptions.cpp" line="64"/>
         <source>%1 cannot be run:
   %2</source>
         <translation>%1 無法執行：
@@ -9321,77 +9377,77 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="74"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Operator:</source>
         <translation>作業員：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="93"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="104"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="111"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="155"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="166"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="168"/>
         <source>READY</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="185"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="197"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="186"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9400,147 +9456,175 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="211"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="206"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="222"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="235"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已測試 %1 · 合格 %2 · 不合格 %3 · 一次良率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="264"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>TESTING</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
+        <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（保存在本工作站）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
         <source>NOT RECORDED</source>
         <translation>未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/ProductionView.cpp" line="416"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="154"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <source>it does not answer</source>
+        <translation>資料庫沒有回應</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="423"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="165"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="330"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="384"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="403"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11853,9 +11937,41 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="138"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="151"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果資料庫的結構版本為 %1，比本程式支援的版本 (%2) 還新：請更新此工站的 OpenTOP；未寫入任何資料</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSink</name>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="135"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSink.cpp" line="204"/>
+        <source>the results database refuses unit %1 (serial %2): %3</source>
+        <translation>結果資料庫拒絕單元 %1（序號 %2）：%3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultSpool</name>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="66"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="103"/>
+        <source>the station&apos;s spool %1: %2</source>
+        <translation>工作站暫存檔 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="70"/>
+        <source>its folder cannot be made</source>
+        <translation>無法建立其資料夾</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSpool.cpp" line="130"/>
+        <source>the station&apos;s spool %1: entry %2 cannot be read (%3)</source>
+        <translation>工作站暫存檔 %1：第 %2 筆無法讀取（%3）</translation>
     </message>
 </context>
 <context>
@@ -11871,22 +11987,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>產品需要序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="158"/>
+        <location filename="../model/eol/ResultStore.cpp" line="160"/>
         <source>a unit is finished with pass, fail or aborted, not %1</source>
         <translation>產品的結束判定須為 pass、fail 或 aborted，而非 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="181"/>
+        <location filename="../model/eol/ResultStore.cpp" line="190"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>產品 %1 (序號 %2) 從未在結果資料庫中開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="183"/>
+        <location filename="../model/eol/ResultStore.cpp" line="192"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>產品 %1 (序號 %2) 已記錄為 %3；保留其記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="201"/>
+        <location filename="../model/eol/ResultStore.cpp" line="210"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>產品 %1 (序號 %2) 在結果資料庫中並非測試中：從未開始，或已完成或已標記為中斷</translation>
     </message>
@@ -11894,43 +12010,34 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="43"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="44"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>未指定資料庫：請指定檔案或 postgresql:// URL</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="51"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="52"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>未知的資料庫 URL &quot;%1&quot;：請使用檔案路徑、sqlite:PATH 或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="55"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="56"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: 需要檔案路徑</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="84"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="85"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; 中的主機缺少結尾的 ]</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="112"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="113"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>資料庫 URL 中有未知的連線選項 &quot;%1&quot;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="129"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="136"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>資料庫 URL 中的連接埠 &quot;%1&quot; 不是 1 到 65535 的數字</translation>
-    </message>
-</context>
-<context>
-    <name>opentop::ResultWriter</name>
-    <message>
-        <location filename="../model/eol/ResultWriter.cpp" line="171"/>
-        <location filename="../model/eol/ResultWriter.cpp" line="189"/>
-        <source>the results database is not open</source>
-        <translation>結果資料庫未開啟</translation>
     </message>
 </context>
 <context>

@@ -17,6 +17,7 @@ const QString kProduction = QStringLiteral("production");
 const QString kUnits = QStringLiteral("units");
 const QString kResultsDb = QStringLiteral("results-db");
 const QString kFullScreen = QStringLiteral("full-screen");
+const QString kStation = QStringLiteral("station");
 
 QString tr(const char* text)
 {
@@ -34,14 +35,19 @@ void ProductionOptions::addTo(QCommandLineParser& parser)
         {kResultsDb,
          tr("Results database for production mode: an SQLite file or postgresql://user@host/db."),
          tr("URL")},
+        {kStation,
+         tr("This station's name in the results (default: as set in the program, else the "
+            "computer's name); not saved."),
+         tr("NAME")},
         {kFullScreen, tr("Start full screen.")},
     });
 }
 
 bool ProductionOptions::apply(const QCommandLineParser& parser, MainWindow* window, QString* error)
 {
-    if ((parser.isSet(kUnits) || parser.isSet(kResultsDb)) && !parser.isSet(kProduction)) {
-        *error = tr("--units and --results-db go with --production RECIPE");
+    if ((parser.isSet(kUnits) || parser.isSet(kResultsDb) || parser.isSet(kStation)) &&
+        !parser.isSet(kProduction)) {
+        *error = tr("--units, --results-db and --station go with --production RECIPE");
         return false;
     }
     if (parser.isSet(kFullScreen))
@@ -49,6 +55,10 @@ bool ProductionOptions::apply(const QCommandLineParser& parser, MainWindow* wind
     if (!parser.isSet(kProduction))
         return true;
     EolStation* station = window->production()->station();
+    if (parser.isSet(kStation) && !station->setStation(parser.value(kStation))) {
+        *error = tr("--station needs a name");
+        return false;
+    }
     QStringList problems;
     if (!station->loadRecipe(parser.value(kProduction), &problems)) {
         *error = tr("%1 cannot be run:\n  %2")

@@ -56,10 +56,11 @@ void EolRun::start(Done done)
     }
     emit recording(tr("recording the unit before anything is sent"));
     m_options.writer->beginUnit(
-        m_record, this, [this](const UnitRecord& begun, const QString& error) {
-            if (!error.isEmpty()) {
-                m_storeError = error;
-                m_firstFailure = tr("the results database cannot record the unit: %1").arg(error);
+        m_record, this, [this](const UnitRecord& begun, const ResultWriter::Saved& saved) {
+            if (!saved.error.isEmpty()) {
+                m_storeError = saved.error;
+                m_firstFailure =
+                    tr("the results database cannot record the unit: %1").arg(saved.error);
                 m_cancelled = true;
                 finish();
                 return;
@@ -191,11 +192,12 @@ void EolRun::finish()
     }
     m_recording = true;
     emit recording(tr("recording the result"));
-    m_options.writer->finishUnit(m_record, this, [this](const QString& error) {
-        if (!error.isEmpty()) {
-            m_storeError = error;
-            qCWarning(lcModel) << "unit record not completed" << error;
+    m_options.writer->finishUnit(m_record, this, [this](const ResultWriter::Saved& saved) {
+        if (!saved.error.isEmpty()) {
+            m_storeError = saved.error;
+            qCWarning(lcModel) << "unit record not completed" << saved.error;
         }
+        m_spooled = saved.spooled;
         complete();
     });
 }

@@ -58,6 +58,8 @@ public:
     bool isRunning() const { return bool(m_done); }
     const UnitRecord& record() const { return m_record; }
     QString storeError() const { return m_storeError; }
+    // The verdict is kept in the station's spool: safe, not yet in the results database.
+    bool spooled() const { return m_spooled; }
     // Drives whose motor may still be turning after the run (not confirmed stopped).
     QStringList unconfirmedStops() const { return m_unconfirmed; }
     qint64 elapsedMs() const { return m_elapsed.elapsed(); }
@@ -93,6 +95,7 @@ private:
     QStringList m_unconfirmed;
     UnitRecord m_record;
     QString m_storeError;
+    bool m_spooled = false;
     QElapsedTimer m_elapsed;
     Done m_done;
 };

@@ -27,6 +27,8 @@ EolStation::EolStation(QObject* parent)
 {
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &EolStation::retryUnsavedNow);
+    connect(m_writer.get(), &ResultWriter::waitingChanged, this,
+            &EolStation::resultsWaitingChanged);
     m_openRetry.setSingleShot(true);
     connect(&m_openRetry, &QTimer::timeout, this, [this] {
         if (!m_writer->isOpen() && !m_writer->isOpening())
@@ -108,6 +110,10 @@ void EolStation::openDatabase(const QString& url)
         if (o.ok) {
             m_dbError.clear();
             m_openDelayS = 2;
+            if (!o.interrupted.isEmpty()) {
+                m_interrupted = o.interrupted;
+                emit interruptedFound(o.interrupted);
+            }
         } else {
             // The screen says so and the station tries again: a line does not wait for someone
             // to restart it when the server is back.
@@ -124,7 +130,24 @@ bool EolStation::openDatabaseAndWait(const QString& url, QString* error)
     const ResultWriter::Opened o = m_writer->openAndWait(databaseLocation(url), m_station);
     if (!o.ok && error)
         *error = o.error;
+    if (o.ok && !o.interrupted.isEmpty()) {
+        m_interrupted = o.interrupted;
+        emit interruptedFound(o.interrupted);
+    }
     return o.ok;
+}
+
+bool EolStation::setStation(const QString& station)
+{
+    const QString name = station.trimmed();
+    if (name.isEmpty() || isRunning())
+        return false;
+    if (name == m_station)
+        return true;
+    m_station = name;
+    if (m_writer->isOpen())
+        openDatabase(m_dbUrl); // the lease names the station
+    return true;
 }
 
 bool EolStation::hasDatabase() const
@@ -242,6 +265,7 @@ void EolStation::finished(const UnitRecord& record)
 {
     m_unconfirmed = m_run ? m_run->unconfirmedStops() : QStringList();
     m_storeError = m_run ? m_run->storeError() : QString();
+    m_lastSpooled = m_run && m_run->spooled();
     // A verdict the database does not hold is not a result yet: kept, tried again, and the
     // station tests nothing meanwhile. (A unit never begun sent nothing: nothing to keep.)
     if (!m_storeError.isEmpty() && !record.id.isEmpty()) {
@@ -286,20 +310,36 @@ void EolStation::retryUnsavedNow()
     if (!m_unsaved)
         return;
     m_retry.stop();
-    m_writer->finishUnit(*m_unsaved, this, [this](const QString& error) {
+    m_writer->finishUnit(*m_unsaved, this, [this](const ResultWriter::Saved& saved) {
         if (!m_unsaved)
             return;
-        if (!error.isEmpty()) {
-            m_storeError = error;
+        if (!saved.error.isEmpty()) {
+            m_storeError = saved.error;
             scheduleRetry();
-            emit unsavedResultChanged(false, error);
+            emit unsavedResultChanged(false, saved.error);
             return;
         }
+        m_lastSpooled = saved.spooled;
         count(*m_unsaved); // the screen's counters hold what the database holds
         m_unsaved.reset();
         m_storeError.clear();
         emit unsavedResultChanged(true, QString());
     });
+}
+
+int EolStation::resultsWaiting() const
+{
+    return m_writer->waiting();
+}
+
+QString EolStation::resultsWaitingError() const
+{
+    return m_writer->waitingError();
+}
+
+void EolStation::sendWaitingResultsNow()
+{
+    m_writer->flushNow();
 }
 
 } // namespace opentop

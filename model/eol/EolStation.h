@@ -2,6 +2,7 @@
 
 #include "eol/EolRun.h"
 #include "eol/Recipe.h"
+#include "eol/StationLease.h"
 #include "eol/UnitRecord.h"
 
 #include <QCoreApplication>
@@ -69,7 +70,9 @@ public:
     QString databaseUrl() const { return m_dbUrl; }
     bool hasDatabase() const;
     bool isOpeningDatabase() const;
-    void setStation(const QString& station) { m_station = station; }
+    // The station's name in every record (default: the host's name). A database already open is
+    // opened again under the new name; refused (false) while a unit runs or for a blank name.
+    bool setStation(const QString& station);
     QString station() const { return m_station; }
     void setOperatorName(const QString& name) { m_operator = name; }
     void setTiming(const EolStepRunner::Timing& timing) { m_timing = timing; }
@@ -93,6 +96,15 @@ public:
     const std::optional<UnitRecord>& unsavedResult() const { return m_unsaved; }
     int nextRetrySeconds() const;
     void retryUnsavedNow();
+    // The last verdict is kept in the station's spool, not yet in the results database.
+    bool lastResultSpooled() const { return m_lastSpooled; }
+    // Records in the spool, waiting for the results database, and why.
+    int resultsWaiting() const;
+    QString resultsWaitingError() const;
+    void sendWaitingResultsNow();
+    // Units of this station that a process now gone left running (found when the database
+    // opened): interrupted in the database, and named on the screen.
+    const QVector<StationLease::Leftover>& interruptedUnits() const { return m_interrupted; }
 
 signals:
     void unitStarted(const QString& serial);
@@ -103,6 +115,8 @@ signals:
     void unitFinished(const opentop::UnitRecord& record);
     // The unsaved verdict was recorded at last (recorded() true), or another try failed.
     void unsavedResultChanged(bool recorded, const QString& error);
+    void resultsWaitingChanged(int waiting, const QString& error);
+    void interruptedFound(const QVector<opentop::StationLease::Leftover>& units);
     // The answer to openDatabase(): `error` names the database and why not.
     void databaseOpened(bool ok, const QString& error);
 
@@ -127,6 +141,8 @@ private:
     QStringList m_unconfirmed;
     QString m_storeError;
     std::optional<UnitRecord> m_unsaved;
+    bool m_lastSpooled = false;
+    QVector<StationLease::Leftover> m_interrupted;
     QTimer m_retry;
     int m_retryDelayS = 1;
     QString m_dbUrl;

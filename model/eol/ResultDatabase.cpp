@@ -135,6 +135,13 @@ bool ResultDatabase::exec(const QString& sql, QString* error)
     return false;
 }
 
+QString ResultDatabase::nowSecondsSql() const
+{
+    return url_.engine == ResultUrl::Engine::Sqlite
+               ? QStringLiteral("((julianday('now') - 2440587.5) * 86400.0)")
+               : QStringLiteral("EXTRACT(EPOCH FROM clock_timestamp())");
+}
+
 QString ResultDatabase::integrityCheck()
 {
     if (url_.engine != ResultUrl::Engine::Sqlite)

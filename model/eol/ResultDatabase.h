@@ -47,6 +47,9 @@ public:
     void rollback();
     // Runs one statement (pragmas, tests); *error gets the driver's message.
     bool exec(const QString& sql, QString* error);
+    // An SQL expression for the database's own clock in seconds since 1970 (leases compare
+    // heartbeats by one clock, not by the clocks of the stations that wrote them).
+    QString nowSecondsSql() const;
     // SQLite's PRAGMA integrity_check result ("ok"), empty on PostgreSQL.
     QString integrityCheck();
 

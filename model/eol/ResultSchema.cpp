@@ -86,6 +86,19 @@ const QVector<ResultSchema::Migration>& ResultSchema::migrations()
                          " PRIMARY KEY (unit_id, seq))"),
           QStringLiteral("CREATE INDEX units_by_recipe ON units (recipe_name, started_utc)"),
           QStringLiteral("CREATE INDEX units_by_station ON units (station, status)")}},
+        {3,
+         QStringLiteral("station leases: which running unit belongs to a process still alive"),
+         {QStringLiteral("CREATE TABLE station_leases ("
+                         " lease_id VARCHAR(40) NOT NULL PRIMARY KEY,"
+                         " station VARCHAR(200) NOT NULL,"
+                         " host VARCHAR(200) NOT NULL,"
+                         " pid BIGINT NOT NULL,"
+                         " program VARCHAR(100) NOT NULL,"
+                         " started_utc VARCHAR(32) NOT NULL,"
+                         " heartbeat_s DOUBLE PRECISION NOT NULL)"),
+          // NULL on rows from before leases: the station name decides for those, as it did.
+          QStringLiteral("ALTER TABLE units ADD COLUMN lease_id VARCHAR(40)"),
+          QStringLiteral("CREATE INDEX units_by_status ON units (status)")}},
     };
     return list;
 }

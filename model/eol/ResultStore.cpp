@@ -80,20 +80,22 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
             *error = tr("a unit needs a serial number");
         return false;
     }
-    if (record.id.isEmpty())
-        record.id = QUuid::createUuid().toString(QUuid::WithoutBraces);
-    if (!record.started.isValid())
-        record.started = uniqueStartUtc();
+    identify(record);
     if (!database_.begin(error))
         return false;
     QSqlQuery q(database_.db());
-    q.prepare(QStringLiteral(
-        "INSERT INTO units (unit_id, serial, station, operator_name, started_utc, ended_utc,"
-        " recipe_name, recipe_revision, recipe_checksum, status, failure_reason)"
-        " VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', '')"));
+    const bool leases = hasLeases();
+    q.prepare(
+        QStringLiteral("INSERT INTO units (unit_id, serial, station, operator_name, started_utc,"
+                       " ended_utc, recipe_name, recipe_revision, recipe_checksum, status,"
+                       " failure_reason%1) VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', ''%2)")
+            .arg(leases ? QStringLiteral(", lease_id") : QString(),
+                 leases ? QStringLiteral(", ?") : QString()));
     bind(q, {record.id, record.serial, record.station, record.operatorName,
              UnitRecordJson::timeText(record.started), record.recipeName, record.recipeRevision,
              record.recipeChecksum});
+    if (leases)
+        q.addBindValue(lease_.isEmpty() ? QVariant(QMetaType::fromType<QString>()) : lease_);
     if (!run(q, error) || !database_.commit(error)) {
         database_.rollback();
         return false;
@@ -169,13 +171,20 @@ bool ResultStore::finishUnit(UnitRecord& record, QString* error)
     };
     // Only a running unit is finished: a recorded verdict or an interruption is never replaced.
     QSqlQuery check(database_.db());
-    check.prepare(QStringLiteral("SELECT status FROM units WHERE unit_id = ?"));
+    check.prepare(QStringLiteral("SELECT status, %1 FROM units WHERE unit_id = ?")
+                      .arg(hasLeases() ? QStringLiteral("lease_id") : QStringLiteral("NULL")));
     bind(check, {record.id});
     if (!run(check, error))
         return fail();
-    const QString found = check.next() ? check.value(0).toString() : QString();
+    QString found;
+    QString lease;
+    if (check.next()) {
+        found = check.value(0).toString();
+        lease = check.value(1).toString();
+    }
     check.finish();
-    if (found != QLatin1String("running")) {
+    const bool ours = found == QLatin1String("interrupted") && !lease.isEmpty() && lease == lease_;
+    if (found != QLatin1String("running") && !ours) {
         if (error)
             *error = found.isEmpty()
                          ? tr("unit %1 (serial %2) was never begun in the results database")
@@ -191,7 +200,7 @@ bool ResultStore::finishUnit(UnitRecord& record, QString* error)
     QSqlQuery q(database_.db());
     q.prepare(QStringLiteral(
         "UPDATE units SET ended_utc = ?, status = ?, failure_reason = ?, operator_name = ?"
-        " WHERE unit_id = ? AND status = 'running'"));
+        " WHERE unit_id = ? AND status IN ('running', 'interrupted')"));
     bind(q, {UnitRecordJson::timeText(record.ended), unitStatusName(record.status),
              record.failureReason, record.operatorName, record.id});
     if (!run(q, error))
@@ -214,7 +223,8 @@ int ResultStore::markInterrupted(const QString& station, const QDateTime& before
         return -1;
     QSqlQuery q(database_.db());
     q.prepare(QStringLiteral("UPDATE units SET status = 'interrupted', failure_reason = ?"
-                             " WHERE station = ? AND status = 'running' AND started_utc < ?"));
+                             " WHERE station = ? AND status = 'running' AND started_utc < ?%1")
+                  .arg(hasLeases() ? QStringLiteral(" AND lease_id IS NULL") : QString()));
     bind(q, {interruptedReason(), station, UnitRecordJson::timeText(before)});
     if (!run(q, error)) {
         database_.rollback();
@@ -226,6 +236,29 @@ int ResultStore::markInterrupted(const QString& station, const QDateTime& before
         return -1;
     }
     return count;
+}
+
+void ResultStore::identify(UnitRecord& record)
+{
+    if (record.id.isEmpty())
+        record.id = QUuid::createUuid().toString(QUuid::WithoutBraces);
+    if (!record.started.isValid())
+        record.started = uniqueStartUtc();
+}
+
+bool ResultStore::hasLeases() const
+{
+    return database_.schemaVersion() >= 3;
+}
+
+QString ResultStore::statusOf(const QString& unitId, QString* error)
+{
+    QSqlQuery q(database_.db());
+    q.prepare(QStringLiteral("SELECT status FROM units WHERE unit_id = ?"));
+    q.addBindValue(unitId);
+    if (!run(q, error))
+        return QString();
+    return q.next() ? q.value(0).toString() : QString();
 }
 
 } // namespace opentop

@@ -24,11 +24,23 @@ public:
     // its row with status 'running' and no children. The record's own status is left as it is:
     // it is what finishUnit() will record.
     bool beginUnit(UnitRecord& record, QString* error);
+    // Gives a record without them its id and start time, as beginUnit() does (the spool keeps
+    // them before the database sees the unit).
+    static void identify(UnitRecord& record);
     // The record's final status (not running) with all it holds, in one transaction; the unit
     // must have been begun and still be running. Sets an ended time (now) when it has none.
+    // A unit of this store's lease that another process marked interrupted meanwhile (its lease
+    // looked dead while the database was out of reach) is finished too: it was not.
     bool finishUnit(UnitRecord& record, QString* error);
-    // Rows of `station` still 'running' that started before `before` (this station's own start)
-    // become 'interrupted' with a reason in words. Returns how many, -1 on an error.
+    // The lease (StationLease) that units begun from now on belong to; empty: none.
+    void setLease(const QString& lease) { lease_ = lease; }
+    QString lease() const { return lease_; }
+    // A unit's status in the database ("running", "pass" …); empty when there is no such unit
+    // or on an error (*error set).
+    QString statusOf(const QString& unitId, QString* error);
+    // Rows of `station` from before leases (no lease) still 'running' that started before
+    // `before` become 'interrupted' with a reason in words. Returns how many, -1 on an error.
+    // Rows with a lease are StationLease::sweep()'s.
     int markInterrupted(const QString& station, const QDateTime& before, QString* error);
 
     // Called inside finishUnit's transaction once every child row is written, before the status
@@ -40,8 +52,11 @@ public:
 private:
     bool writeChildren(const UnitRecord& record, QString* error);
 
+    bool hasLeases() const;
+
     ResultDatabase& database_;
     std::function<void()> hook_;
+    QString lease_;
 };
 
 } // namespace opentop

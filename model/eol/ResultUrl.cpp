@@ -4,6 +4,7 @@
 #include <QStandardPaths>
 #include <QStringList>
 #include <QUrl>
+#include <algorithm>
 
 namespace opentop {
 
@@ -112,6 +113,12 @@ std::optional<ResultUrl> ResultUrl::parse(const QString& text, QString* error,
             return fail(tr("unknown connection option \"%1\" in the database URL; known: %2")
                             .arg(key, passedKeywords().join(QLatin1String(", "))));
     }
+    // A server out of reach (a cable, a switched-off host) must not hold a station for TCP's
+    // two minutes: its results go to the spool after this.
+    if (!std::any_of(options.cbegin(), options.cend(), [](const QString& o) {
+            return o.startsWith(QLatin1String("connect_timeout="));
+        }))
+        options.append(QStringLiteral("connect_timeout=5"));
     url.options = options.join(QLatin1Char(';'));
     auto fromEnvironment = [&](QString& part, const char* name) {
         if (part.isEmpty())

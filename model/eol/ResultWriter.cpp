@@ -2,51 +2,61 @@
 
 #include "ModelLog.h"
 #include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
-#include "eol/ResultUrl.h"
 
-#include <QDateTime>
 #include <QEventLoop>
 #include <QPointer>
+#include <QTimer>
 
 namespace opentop {
 
 // Touched only on the writer's thread.
 struct ResultWriter::State
 {
-    std::unique_ptr<ResultDatabase> db;
-    std::unique_ptr<ResultStore> store;
-    QString url; // as opened: a lost server connection is opened again with it
+    ResultSink sink;
+    QTimer* heartbeat = nullptr;
+    QTimer* retry = nullptr;
+    int retryS = 2;
+    std::function<void(int, const QString&)> report; // to the writer's own thread
 
-    // A server that went away (restarted, network) leaves the connection dead: QtSql does not
-    // reconnect by itself. Opened again without marking anything interrupted (this station's
-    // own unit may be in progress).
-    bool reconnect(QString* error)
+    // After anything that may change the spool: its count goes to the screen, and a spool that
+    // holds records is tried again later, 2, 4 … 30 s apart.
+    void spoolChanged(int waiting, const QString& error)
     {
-        if (url.isEmpty())
-            return false;
-        std::unique_ptr<ResultDatabase> fresh = ResultDatabase::open(url, error);
-        if (!fresh)
-            return false;
-        store.reset();
-        db = std::move(fresh);
-        store = std::make_unique<ResultStore>(*db);
-        qCInfo(lcModel) << "results database: connected again to" << db->url().displayText();
-        return true;
-    }
-    // A job's write that failed is tried once more on a new connection, when one can be made.
-    template <typename Write> bool withRetry(Write write, QString* error)
-    {
-        if (store && write(*store, error))
-            return true;
-        QString why;
-        if (!reconnect(&why)) {
-            if (error->isEmpty())
-                *error = why;
-            return false;
+        report(waiting, error);
+        if (!retry)
+            return;
+        if (waiting == 0) {
+            retry->stop();
+            retryS = 2;
+        } else if (!retry->isActive()) {
+            retry->start(retryS * 1000);
+            retryS = std::min(30, retryS * 2);
         }
-        error->clear();
-        return write(*store, error);
+    }
+    void startTimers(QObject* owner)
+    {
+        if (heartbeat)
+            return;
+        heartbeat = new QTimer(owner);
+        heartbeat->setInterval(StationLease::kRenewS * 1000);
+        QObject::connect(heartbeat, &QTimer::timeout, owner, [this] { sink.heartbeat(); });
+        heartbeat->start();
+        retry = new QTimer(owner);
+        retry->setSingleShot(true);
+        QObject::connect(retry, &QTimer::timeout, owner, [this] { flush(); });
+    }
+    void flush()
+    {
+        const ResultSink::Flushed f = sink.flush();
+        if (f.sent && retry)
+            retryS = 2;
+        spoolChanged(f.waiting, f.error);
+    }
+    void stopTimers()
+    {
+        delete heartbeat;
+        delete retry;
+        heartbeat = retry = nullptr;
     }
 };
 
@@ -54,7 +64,12 @@ ResultWriter::ResultWriter(QObject* parent)
     : QObject(parent)
     , m_worker(new QObject)
     , m_state(std::make_shared<State>())
+    , m_spoolFolder(ResultSpool::defaultFolder())
 {
+    m_state->report = [this](int waiting, const QString& error) {
+        QMetaObject::invokeMethod(
+            this, [this, waiting, error] { reportWaiting(waiting, error); }, Qt::QueuedConnection);
+    };
     m_thread.setObjectName(QStringLiteral("results"));
     m_worker->moveToThread(&m_thread);
     m_thread.start();
@@ -67,8 +82,8 @@ ResultWriter::~ResultWriter()
     QMetaObject::invokeMethod(
         m_worker,
         [state = m_state] {
-            state->store.reset();
-            state->db.reset();
+            state->stopTimers();
+            state->sink.close();
             QThread::currentThread()->quit();
         },
         Qt::QueuedConnection);
@@ -107,27 +122,34 @@ void ResultWriter::post(QObject* context, std::function<Result(State&)> job,
         Qt::QueuedConnection);
 }
 
+void ResultWriter::reportWaiting(int waiting, const QString& error)
+{
+    if (waiting == m_waiting && error == m_waitingError)
+        return;
+    m_waiting = waiting;
+    m_waitingError = error;
+    emit waitingChanged(waiting, error);
+}
+
 void ResultWriter::open(const QString& url, const QString& station, QObject* context, OpenDone done)
 {
     ++m_opening;
-    std::function<Opened(State&)> job = [url, station](State& state) {
+    std::function<Opened(State&)> job = [url, station, folder = m_spoolFolder,
+                                         worker = m_worker](State& state) {
         Opened opened;
-        std::unique_ptr<ResultDatabase> db = ResultDatabase::open(url, &opened.error);
-        if (!db)
+        if (!state.sink.open(url, station, folder, &opened.error))
             return opened;
-        opened.displayText = db->url().displayText();
-        state.store.reset();
-        state.db = std::move(db);
-        state.url = url;
-        state.store = std::make_unique<ResultStore>(*state.db);
         opened.ok = true;
+        opened.displayText = state.sink.displayText();
+        opened.spoolError = state.sink.spoolError();
+        opened.spoolPath = state.sink.spoolPath();
+        for (const StationLease::Leftover& l : state.sink.takeLeftovers())
+            if (l.station == station)
+                opened.interrupted.append(l);
         if (!station.isEmpty()) {
-            QString why;
-            const int marked =
-                state.store->markInterrupted(station, QDateTime::currentDateTimeUtc(), &why);
-            if (marked < 0)
-                qCWarning(lcModel) << "results database: leftovers not marked" << why;
-            opened.interrupted = std::max(0, marked);
+            state.startTimers(worker);
+            opened.waiting = std::max(0, state.sink.waiting());
+            state.spoolChanged(opened.waiting, QString());
         }
         return opened;
     };
@@ -136,6 +158,7 @@ void ResultWriter::open(const QString& url, const QString& station, QObject* con
         if (o.ok) {
             m_open = true;
             m_displayText = o.displayText;
+            m_spoolPath = o.spoolPath;
         }
     });
 }
@@ -156,7 +179,7 @@ void ResultWriter::run(QObject* context, std::function<void(ResultDatabase* db)>
                        std::function<void()> done)
 {
     std::function<bool(State&)> work = [job = std::move(job)](State& state) {
-        job(state.db.get());
+        job(state.sink.database());
         return true;
     };
     post<bool>(context, std::move(work), [done = std::move(done)](const bool&) { done(); });
@@ -164,18 +187,12 @@ void ResultWriter::run(QObject* context, std::function<void(ResultDatabase* db)>
 
 void ResultWriter::beginUnit(const UnitRecord& record, QObject* context, BeginDone done)
 {
-    using Begun = std::pair<UnitRecord, QString>;
+    using Begun = std::pair<UnitRecord, Saved>;
     std::function<Begun(State&)> job = [record](State& state) {
-        Begun begun{record, QString()};
-        if (!state.store && state.url.isEmpty()) {
-            begun.second = tr("the results database is not open");
-            return begun;
-        }
-        state.withRetry(
-            [&begun](ResultStore& store, QString* error) {
-                return store.beginUnit(begun.first, error); // a retry keeps the id it was given
-            },
-            &begun.second);
+        Begun begun{record, Saved()};
+        begun.second = state.sink.begin(begun.first);
+        if (begun.second.spooled)
+            state.spoolChanged(state.sink.waiting(), begun.second.why);
         return begun;
     };
     post<Begun>(context, std::move(job), [done](const Begun& b) { done(b.first, b.second); });
@@ -183,19 +200,27 @@ void ResultWriter::beginUnit(const UnitRecord& record, QObject* context, BeginDo
 
 void ResultWriter::finishUnit(const UnitRecord& record, QObject* context, FinishDone done)
 {
-    std::function<QString(State&)> job = [record](State& state) {
-        QString error;
-        if (!state.store && state.url.isEmpty())
-            return tr("the results database is not open");
-        state.withRetry(
-            [&record](ResultStore& store, QString* why) {
-                UnitRecord finished = record;
-                return store.finishUnit(finished, why);
-            },
-            &error);
-        return error;
+    std::function<Saved(State&)> job = [record](State& state) {
+        const Saved saved = state.sink.finish(record);
+        if (saved.spooled)
+            state.spoolChanged(state.sink.waiting(), saved.why);
+        else if (saved.error.isEmpty())
+            state.spoolChanged(std::max(0, state.sink.waiting()), QString());
+        return saved;
     };
-    post<QString>(context, std::move(job), std::move(done));
+    post<Saved>(context, std::move(job), std::move(done));
+}
+
+void ResultWriter::flushNow()
+{
+    QMetaObject::invokeMethod(
+        m_worker,
+        [state = m_state] {
+            if (state->retry)
+                state->retry->stop();
+            state->flush();
+        },
+        Qt::QueuedConnection);
 }
 
 } // namespace opentop

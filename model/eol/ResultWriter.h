@@ -1,5 +1,6 @@
 #pragma once
 
+#include "eol/ResultSink.h"
 #include "eol/UnitRecord.h"
 
 #include <QCoreApplication>
@@ -18,11 +19,15 @@ class ResultDatabase;
 // seconds (SQLite's busy timeout is 10 s); the operator screen and its STOP keys must not freeze
 // meanwhile.
 //
-// Jobs run in the order they are given, with a ResultDatabase and ResultStore that live on the
-// writer's thread (a QSqlDatabase connection belongs to its thread). Each answer comes back on
-// the thread of the `context` object given with the job, later, never inside the call; none
-// comes when the context is gone by then. Destroying the writer finishes every job already
-// given (a unit's record is never dropped half-way) and then closes the database.
+// Jobs run in the order they are given, with a ResultSink that lives on the writer's thread (a
+// QSqlDatabase connection belongs to its thread). Each answer comes back on the thread of the
+// `context` object given with the job, later, never inside the call; none comes when the context
+// is gone by then. Destroying the writer finishes every job already given (a unit's record is
+// never dropped half-way) and then closes the database.
+//
+// A station's writer (open() with a station name) keeps records the database cannot take in the
+// station's spool and sends them by itself once it answers again (2, 4 … 30 s apart), and renews
+// the station's lease every StationLease::kRenewS seconds.
 class ResultWriter : public QObject
 {
     Q_OBJECT
@@ -32,17 +37,25 @@ public:
         bool ok = false;
         QString error;       // why not, naming the database (never its password)
         QString displayText; // the database as a user may read it
-        int interrupted = 0; // the station's leftovers now recorded as interrupted
+        // Units of this station left running by a process that is gone, now interrupted.
+        QVector<StationLease::Leftover> interrupted;
+        int waiting = 0;    // spooled records not yet sent
+        QString spoolError; // the spool cannot be used (records then need the database)
+        QString spoolPath;
     };
+    using Saved = ResultSink::Saved;
     using OpenDone = std::function<void(const Opened&)>;
-    using BeginDone = std::function<void(const UnitRecord& begun, const QString& error)>;
-    using FinishDone = std::function<void(const QString& error)>;
+    using BeginDone = std::function<void(const UnitRecord& begun, const Saved& saved)>;
+    using FinishDone = std::function<void(const Saved& saved)>;
 
     explicit ResultWriter(QObject* parent = nullptr);
     ~ResultWriter() override;
 
-    // Opens `url` (made when a missing SQLite file) and turns the rows `station` left running
-    // into interrupted ones (ResultStore::markInterrupted; none when `station` is empty). A
+    // Where a station's spool files are (default ResultSpool::defaultFolder()); before open().
+    void setSpoolFolder(const QString& folder) { m_spoolFolder = folder; }
+
+    // Opens `url` (made when a missing SQLite file). With a `station` name: takes a lease, sends
+    // what the spool holds, and marks units left running by gone processes interrupted. A
     // database already open is closed once the new one is.
     void open(const QString& url, const QString& station, QObject* context, OpenDone done);
     // The same, waiting for the answer in a local event loop (the command line, start-up).
@@ -50,11 +63,14 @@ public:
     bool isOpen() const { return m_open; }
     bool isOpening() const { return m_opening > 0; }
     QString displayText() const { return m_displayText; }
+    QString spoolPath() const { return m_spoolPath; }
 
-    // ResultStore::beginUnit: `begun` is the record with its id and start time.
+    // The unit's 'running' row: `begun` is the record with its id and start time.
     void beginUnit(const UnitRecord& record, QObject* context, BeginDone done);
-    // ResultStore::finishUnit: the whole record in one transaction.
+    // The whole record in one transaction.
     void finishUnit(const UnitRecord& record, QObject* context, FinishDone done);
+    // Sends the spool now instead of at the next try.
+    void flushNow();
 
     // Runs `job` on the writer's thread with the open database (null when none), then `done` on
     // `context`'s thread: a query (what it finds travels in what both capture).
@@ -63,6 +79,12 @@ public:
 
     // Jobs given and not yet answered (tests, and the screen's "recording" state).
     int pending() const { return m_pending; }
+    // Records in the spool as last counted, and why the oldest is still there.
+    int waiting() const { return m_waiting; }
+    QString waitingError() const { return m_waitingError; }
+
+signals:
+    void waitingChanged(int waiting, const QString& error);
 
 private:
     struct State;
@@ -72,14 +94,19 @@ private:
     void post(QObject* context, std::function<Result(State&)> job,
               std::function<void(const Result&)> answer,
               std::function<void(const Result&)> here = {});
+    void reportWaiting(int waiting, const QString& error); // on this object's thread
 
     QThread m_thread;
     QObject* m_worker; // lives on m_thread: jobs are queued to it
     std::shared_ptr<State> m_state;
+    QString m_spoolFolder;
     bool m_open = false;
     int m_opening = 0;
     int m_pending = 0;
+    int m_waiting = 0;
+    QString m_waitingError;
     QString m_displayText;
+    QString m_spoolPath;
 };
 
 } // namespace opentop

@@ -289,7 +289,7 @@
 <context>
     <name>opentop::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../../ui/main/MainWindow.cpp" line="440"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n edit has not been written to the drives. Quit and discard it?</numerusform>
@@ -389,11 +389,19 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="230"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drives</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../ui/eol/ProductionView.cpp" line="416"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
+            <numerusform>%n results kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
         </translation>
     </message>
 </context>

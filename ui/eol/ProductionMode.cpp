@@ -6,12 +6,19 @@
 #include <QAction>
 #include <QBoxLayout>
 #include <QDockWidget>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
+#include <QSettings>
 #include <utility>
 
 namespace opentop {
+
+namespace {
+constexpr char kStationKey[] = "eol/station";
+}
 
 ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLayout* column,
                                QVector<QMenu*> editingMenus, std::function<ModbusClient*()> client,
@@ -36,6 +43,13 @@ ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLa
     m_fullScreen->setShortcut(QKeySequence(Qt::Key_F11));
     connect(m_fullScreen, &QAction::toggled, this,
             [this](bool on) { on ? m_window->showFullScreen() : m_window->showNormal(); });
+    // Each station of a line has its own name in the records (two PCs must not share one).
+    const QString saved = QSettings().value(QLatin1String(kStationKey)).toString();
+    if (!saved.isEmpty())
+        m_station->setStation(saved);
+    m_stationName = new QAction(tr("&Station name…"), this);
+    m_stationName->setToolTip(tr("The name this end-of-line station records with every unit"));
+    connect(m_stationName, &QAction::triggered, this, &ProductionMode::askStationName);
     connect(m_station, &EolStation::databaseOpened, this, [this](bool ok, const QString& error) {
         // Said once per outage: the station goes on trying by itself and the screen's status
         // line says so.
@@ -55,6 +69,28 @@ ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLa
         if (ok)
             m_warnedDatabase = false;
     });
+}
+
+void ProductionMode::askStationName()
+{
+    bool ok = false;
+    const QString name =
+        QInputDialog::getText(m_window, tr("Station name"),
+                              tr("The name this station records with every unit (each station "
+                                 "of a line needs its own):"),
+                              QLineEdit::Normal, m_station->station(), &ok)
+            .trimmed();
+    if (!ok || name == m_station->station())
+        return;
+    if (!m_station->setStation(name)) {
+        QMessageBox::warning(m_window, tr("Station name"),
+                             name.isEmpty() ? tr("A station needs a name.")
+                                            : tr("A unit is being tested: change the name once "
+                                                 "it is finished."));
+        return;
+    }
+    QSettings().setValue(QLatin1String(kStationKey), name);
+    m_view->refresh();
 }
 
 bool ProductionMode::isActive() const

@@ -34,6 +34,7 @@ public:
 
     QAction* toggleAction() const { return m_toggle; }
     QAction* fullScreenAction() const { return m_fullScreen; }
+    QAction* stationNameAction() const { return m_stationName; }
     bool isActive() const;
     void setActive(bool active);
     EolStation* station() const { return m_station; }
@@ -45,6 +46,7 @@ public:
     bool guard(const QString& what, std::function<void()> then);
 
 private:
+    void askStationName();
     QMainWindow* m_window;
     QWidget* m_engineering;
     QVector<QMenu*> m_editingMenus;
@@ -52,6 +54,7 @@ private:
     ProductionView* m_view;
     QAction* m_toggle;
     QAction* m_fullScreen;
+    QAction* m_stationName;
     QVector<QDockWidget*> m_hiddenDocks;
     bool m_warnedDatabase = false; // the operator was told the database cannot be reached
 };

@@ -67,6 +67,14 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     auto* openRecipe = new QPushButton(tr("Open recipe…"), this);
     auto* openValues = new QPushButton(tr("Per-unit values…"), this);
     m_database = new QLabel(this);
+    // Results kept on the station while the results server does not answer, and units a
+    // station process that is gone left unfinished: amber, until the line is clear again.
+    m_notice = new QLabel(this);
+    m_notice->setObjectName(QStringLiteral("stationNotice"));
+    m_notice->setWordWrap(true);
+    m_notice->setStyleSheet(QStringLiteral(
+        "QLabel { background: #ffe08a; color: black; padding: 4px; border-radius: 4px; }"));
+    m_notice->hide();
     m_operator = new QLineEdit(loginName(), this);
     m_operator->setPlaceholderText(tr("operator"));
     m_operator->setMaximumWidth(180);
@@ -115,6 +123,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
     layout->addWidget(m_database);
+    layout->addWidget(m_notice);
     layout->addLayout(serialRow);
     layout->addWidget(m_verdict);
     layout->addWidget(m_reason);
@@ -147,6 +156,8 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     connect(m_station, &EolStation::unsavedResultChanged, this,
             &ProductionView::unsavedResultChanged);
     connect(m_station, &EolStation::databaseOpened, this, [this] { refresh(); });
+    connect(m_station, &EolStation::resultsWaitingChanged, this, [this] { refreshNotice(); });
+    connect(m_station, &EolStation::interruptedFound, this, [this] { refreshNotice(); });
     connect(m_station, &EolStation::recording, this, [this](const QString& what) {
         if (!m_station->run())
             return;
@@ -157,6 +168,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     showVerdict(tr("READY"), QStringLiteral("#5f6b76"), QString());
     refreshRecipe();
     refreshCounters();
+    refreshNotice();
 }
 
 void ProductionView::refresh()
@@ -314,6 +326,11 @@ void ProductionView::unitFinished(const UnitRecord& record)
     if (m_station->hasUnsavedResult()) {
         // Never a verdict the database does not hold: red, and nothing else is tested.
         showNotRecorded();
+    } else if (m_station->lastResultSpooled()) {
+        showVerdictOf(record, (reason.isEmpty() ? tr("Unit %1").arg(record.serial) : reason) +
+                                  QLatin1Char('\n') +
+                                  tr("Kept on this station: the results server did not answer. "
+                                     "It is sent by itself when the server answers."));
     } else {
         showVerdictOf(record, reason);
     }
@@ -326,6 +343,8 @@ void ProductionView::unitFinished(const UnitRecord& record)
     QString verdict = unitStatusName(record.status).toUpper();
     if (m_station->hasUnsavedResult())
         verdict = tr("%1, NOT RECORDED").arg(verdict);
+    else if (m_station->lastResultSpooled())
+        verdict = tr("%1 (kept on this station)").arg(verdict);
     const QStringList cells{record.ended.toLocalTime().toString(QStringLiteral("HH:mm:ss")),
                             record.serial, verdict, record.failureReason};
     for (int c = 0; c < cells.size(); ++c)
@@ -387,6 +406,27 @@ void ProductionView::showVerdictOf(const UnitRecord& record, const QString& reas
         showVerdict(tr("ABORTED"), QStringLiteral("#b35c00"), reason);
         break;
     }
+}
+
+void ProductionView::refreshNotice()
+{
+    QStringList lines;
+    const int waiting = m_station->resultsWaiting();
+    if (waiting > 0)
+        lines << tr("%n result(s) kept on this station, not yet in the results database: %1. "
+                    "They are sent by themselves, in order, when it answers.",
+                    nullptr, waiting)
+                     .arg(m_station->resultsWaitingError().isEmpty()
+                              ? tr("it does not answer")
+                              : m_station->resultsWaitingError());
+    for (const StationLease::Leftover& unit : m_station->interruptedUnits())
+        lines << tr("Unit %1 (begun %2) was not finished: the station stopped during its test. "
+                    "It is recorded as interrupted; test it again.")
+                     .arg(unit.serial, QDateTime::fromString(unit.started, Qt::ISODateWithMs)
+                                           .toLocalTime()
+                                           .toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
+    m_notice->setText(lines.join(QLatin1Char('\n')));
+    m_notice->setVisible(!lines.isEmpty());
 }
 
 } // namespace opentop

@@ -34,6 +34,7 @@ public:
     QLabel* reasonLabel() const { return m_reason; }
     QLabel* countersLabel() const { return m_counters; }
     QLabel* databaseLabel() const { return m_database; }
+    QLabel* noticeLabel() const { return m_notice; }
     QPushButton* cancelButton() const { return m_cancel; }
     QTableWidget* drivesTable() const { return m_drives; }
     QTableWidget* unitsTable() const { return m_units; }
@@ -60,6 +61,7 @@ private:
     void unitFinished(const UnitRecord& record);
     void unsavedResultChanged(bool recorded);
     void showNotRecorded();
+    void refreshNotice();
     void showVerdictOf(const UnitRecord& record, const QString& reason);
     void refreshRecipe();
     void refreshCounters();
@@ -69,6 +71,7 @@ private:
     TrafficLog* m_traffic;
     QLabel* m_recipe;
     QLabel* m_database;
+    QLabel* m_notice;
     QLineEdit* m_operator;
     QLineEdit* m_serial;
     QPushButton* m_cancel;

@@ -82,6 +82,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     m_menus->viewMenu()->addSeparator();
     m_menus->viewMenu()->addAction(m_production->toggleAction());
     m_menus->viewMenu()->addAction(m_production->fullScreenAction());
+    m_menus->viewMenu()->addAction(m_production->stationNameAction());
     // STOP ALL's keys work everywhere in the program, modal dialogs included; the button itself
     // is made per connection.
     new StopAllKeys([this] { return m_stopAll; }, this);

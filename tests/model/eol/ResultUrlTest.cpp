@@ -44,7 +44,12 @@ TEST(ResultUrlTest, PostgresUrlHasEveryPartAndNeverShowsThePassword)
     EXPECT_EQ(url->host, QStringLiteral("db.factory"));
     EXPECT_EQ(url->port, 6543);
     EXPECT_EQ(url->database, QStringLiteral("results"));
-    EXPECT_EQ(url->options, QStringLiteral("sslmode=require"));
+    // A server out of reach is given up after 5 s unless the URL says otherwise.
+    EXPECT_EQ(url->options, QStringLiteral("sslmode=require;connect_timeout=5"));
+    const auto patient = ResultUrl::parse(
+        QStringLiteral("postgresql://db.factory/results?connect_timeout=30"), &error, noPg());
+    ASSERT_TRUE(patient) << error.toStdString();
+    EXPECT_EQ(patient->options, QStringLiteral("connect_timeout=30"));
     EXPECT_EQ(url->driverName(), QStringLiteral("QPSQL"));
     EXPECT_FALSE(url->displayText().contains(QLatin1String("s@cret")));
     EXPECT_EQ(url->displayText(), QStringLiteral("postgresql://eol@db.factory:6543/results"));

@@ -5,6 +5,7 @@
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
 #include "eol/ResultStore.h"
+#include "eol/StationLease.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -74,10 +75,10 @@ TEST_F(ResultWriterTest, TheCallersThreadRunsOnWhileTheDatabaseIsBusy)
     QString beginError;
     QObject context;
     writer.beginUnit(test::eolSampleUnit(QStringLiteral("SN-B1")), &context,
-                     [&](const UnitRecord& record, const QString& why) {
+                     [&](const UnitRecord& record, const ResultWriter::Saved& saved) {
                          answered = true;
                          begun = record;
-                         beginError = why;
+                         beginError = saved.error;
                      });
     EXPECT_FALSE(answered) << "never answered inside the call";
     qint64 longestGap = 0;
@@ -106,8 +107,8 @@ TEST_F(ResultWriterTest, DestroyedWithJobsGivenItFinishesThemFirst)
         // id the test makes; what matters is that both are written before the writer is gone.
         record.id = QStringLiteral("00000000-0000-4000-8000-000000000001");
         record.started = QDateTime::currentDateTimeUtc();
-        writer.beginUnit(record, &context, [](const UnitRecord&, const QString&) {});
-        writer.finishUnit(record, &context, [](const QString&) {});
+        writer.beginUnit(record, &context, [](const UnitRecord&, const ResultWriter::Saved&) {});
+        writer.finishUnit(record, &context, [](const ResultWriter::Saved&) {});
     }
     auto db = open();
     QString error;
@@ -124,7 +125,7 @@ TEST_F(ResultWriterTest, AnAnswerForAContextThatIsGoneIsDropped)
     bool called = false;
     auto* context = new QObject;
     writer.beginUnit(test::eolSampleUnit(QStringLiteral("SN-G1")), context,
-                     [&](const UnitRecord&, const QString&) { called = true; });
+                     [&](const UnitRecord&, const ResultWriter::Saved&) { called = true; });
     delete context;
     ASSERT_TRUE(spinUntil([&] { return writer.pending() == 0; }, 5000));
     EXPECT_FALSE(called);
@@ -142,26 +143,77 @@ TEST_F(ResultWriterTest, ADatabaseThatCannotBeOpenedIsNamedAndNothingIsWritten)
     QObject context;
     bool answered = false;
     writer.beginUnit(test::eolSampleUnit(QStringLiteral("SN-N1")), &context,
-                     [&](const UnitRecord&, const QString& why) {
+                     [&](const UnitRecord&, const ResultWriter::Saved& saved) {
                          answered = true;
-                         error = why;
+                         error = saved.error;
                      });
     ASSERT_TRUE(spinUntil([&] { return answered; }, 5000));
     EXPECT_FALSE(error.isEmpty());
 }
 
-TEST_F(ResultWriterTest, LeftoversOfTheStationBecomeInterruptedAsItOpens)
+TEST_F(ResultWriterTest, AUnitOfAProcessThatIsGoneIsInterruptedAndNamedAsTheStationOpens)
 {
+    QString legacyId;
     {
         auto db = open();
+        QString error;
+        // A process of this host that no longer exists left a unit running.
+        StationLease gone(QStringLiteral("line 1"), QStringLiteral("opentop"));
+        ASSERT_TRUE(gone.renew(*db, &error)) << qPrintable(error);
+        ASSERT_TRUE(db->exec(QStringLiteral("UPDATE station_leases SET pid = 999999999"), &error));
+        ResultStore store(*db);
+        store.setLease(gone.id());
         UnitRecord left = test::eolSampleUnit(QStringLiteral("SN-L1"));
         left.station = QStringLiteral("line 1");
-        QString error;
-        ASSERT_TRUE(ResultStore(*db).beginUnit(left, &error)) << qPrintable(error);
+        ASSERT_TRUE(store.beginUnit(left, &error)) << qPrintable(error);
+        // And a program from before leases left one too: judged by the station's name.
+        UnitRecord old = test::eolSampleUnit(QStringLiteral("SN-L0"));
+        old.station = QStringLiteral("line 1");
+        ASSERT_TRUE(ResultStore(*db).beginUnit(old, &error)) << qPrintable(error);
+        legacyId = old.id;
     }
     ResultWriter writer;
+    writer.setSpoolFolder(dir.filePath(QStringLiteral("spool")));
     const ResultWriter::Opened opened = writer.openAndWait(path(), QStringLiteral("line 1"));
     ASSERT_TRUE(opened.ok) << qPrintable(opened.error);
-    EXPECT_EQ(opened.interrupted, 1);
-    EXPECT_EQ(writer.openAndWait(path(), QStringLiteral("line 1")).interrupted, 0);
+    ASSERT_EQ(opened.interrupted.size(), 1);
+    EXPECT_EQ(opened.interrupted.first().serial, QStringLiteral("SN-L1"));
+    auto db = open();
+    QString error;
+    EXPECT_EQ(ResultStore(*db).statusOf(legacyId, &error), QStringLiteral("interrupted"));
+    ResultWriter again;
+    again.setSpoolFolder(dir.filePath(QStringLiteral("spool")));
+    EXPECT_TRUE(again.openAndWait(path(), QStringLiteral("line 1")).interrupted.isEmpty());
+}
+
+TEST_F(ResultWriterTest, TwoLiveProcessesOfOneStationNeverInterruptEachOthersUnits)
+{
+    // The command line and the window on one PC, both with the host's name as station.
+    ResultWriter window;
+    window.setSpoolFolder(dir.filePath(QStringLiteral("spool")));
+    ASSERT_TRUE(window.openAndWait(path(), QStringLiteral("line 1")).ok);
+    QObject context;
+    UnitRecord begun;
+    bool answered = false;
+    UnitRecord unit = test::eolSampleUnit(QStringLiteral("SN-W1"));
+    unit.station = QStringLiteral("line 1");
+    window.beginUnit(unit, &context, [&](const UnitRecord& r, const ResultWriter::Saved& saved) {
+        EXPECT_TRUE(saved.error.isEmpty()) << qPrintable(saved.error);
+        EXPECT_FALSE(saved.spooled);
+        begun = r;
+        answered = true;
+    });
+    ASSERT_TRUE(spinUntil([&] { return answered; }, 5000));
+
+    ResultWriter commandLine;
+    commandLine.setSpoolFolder(dir.filePath(QStringLiteral("spool")));
+    const ResultWriter::Opened opened = commandLine.openAndWait(path(), QStringLiteral("line 1"));
+    ASSERT_TRUE(opened.ok) << qPrintable(opened.error);
+    EXPECT_TRUE(opened.interrupted.isEmpty());
+    auto db = open();
+    QString error;
+    EXPECT_EQ(ResultStore(*db).statusOf(begun.id, &error), QStringLiteral("running"));
+    EXPECT_EQ(StationLease(QStringLiteral("x"), QStringLiteral("y")).sweep(*db, nullptr, &error),
+              true);
+    EXPECT_EQ(ResultStore(*db).statusOf(begun.id, &error), QStringLiteral("running"));
 }

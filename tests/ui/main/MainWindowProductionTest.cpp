@@ -12,9 +12,13 @@
 #include "eol/RecipeFile.h"
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
+#include "eol/ResultSpool.h"
 #include "workspace/DriveWorkspace.h"
 
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -223,10 +227,87 @@ TEST_F(MainWindowProductionTest, TheScreenAnswersWhileTheResultsDatabaseIsBusy)
 // Issue 25: the station's shared PostgreSQL stops while a unit runs. The verdict the database
 // does not hold is never shown as a result, nothing else is tested meanwhile, and the station
 // records it by itself once the server is back.
-TEST_F(MainWindowProductionTest, APassTheDatabaseDidNotTakeIsShownNotRecordedUntilTheServerTakesIt)
+// Issue 25: the server goes away while the motor turns. The verdict is kept in the station's
+// spool (on its disk) and says so; the line goes on; when the server is back every record
+// reaches it, once.
+TEST_F(MainWindowProductionTest,
+       AServerThatGoesAwayMidUnitKeepsTheVerdictOnTheStationAndTheLineGoesOn)
 {
     if (PostgresServer::skipRequested())
         GTEST_SKIP() << "OPENTOP_TEST_PG_SKIP=1: PostgreSQL tests skipped on request";
+    QString error;
+    PostgresServer* server = PostgresServer::shared(&error);
+    ASSERT_TRUE(server) << qPrintable(error);
+    const QString url = server->createDatabase(QStringLiteral("station_spool"), &error);
+    ASSERT_FALSE(url.isEmpty()) << qPrintable(error);
+    qputenv("OPENTOP_EOL_DB", url.toLocal8Bit());
+    window->production()->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    EolStation* station = window->production()->station();
+    ASSERT_TRUE(waitFor([&] { return station->hasDatabase(); }, 20000));
+
+    QTemporaryDir dir;
+    ProductionView* view = window->production()->view();
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir, 2)));
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-SP1"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }, 20000));
+    ASSERT_TRUE(server->stopServer(&error)) << qPrintable(error);
+    ASSERT_TRUE(
+        waitFor([&] { return view->verdictLabel()->text() != QLatin1String("TESTING"); }, 30000));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("Kept on this station")))
+        << qPrintable(view->reasonLabel()->text());
+    ASSERT_EQ(view->unitsTable()->rowCount(), 1);
+    EXPECT_EQ(view->unitsTable()->item(0, 2)->text(),
+              QStringLiteral("PASS (kept on this station)"));
+    ASSERT_TRUE(waitFor([&] { return view->noticeLabel()->isVisible(); }, 5000));
+    EXPECT_TRUE(
+        view->noticeLabel()->text().contains(QStringLiteral("1 result kept on this station")))
+        << qPrintable(view->noticeLabel()->text());
+
+    // The line goes on while the server is away: the next unit is begun in the spool first.
+    ASSERT_TRUE(view->serialField()->isEnabled());
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-SP2"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    ASSERT_TRUE(waitFor([&] { return view->unitsTable()->rowCount() == 2; }, 40000));
+    EXPECT_EQ(view->unitsTable()->item(0, 2)->text(),
+              QStringLiteral("PASS (kept on this station)"));
+    EXPECT_TRUE(view->noticeLabel()->text().contains(QStringLiteral("3 results kept")))
+        << qPrintable(view->noticeLabel()->text());
+    EXPECT_EQ(speedOf(1), 0);
+
+    // The server returns: the station sends everything by itself, in order, once.
+    ASSERT_TRUE(server->startServer(&error)) << qPrintable(error);
+    ASSERT_TRUE(waitFor([&] { return !view->noticeLabel()->isVisible(); }, 60000))
+        << qPrintable(view->noticeLabel()->text());
+    EXPECT_EQ(station->resultsWaiting(), 0);
+    const auto database = ResultDatabase::open(url, &error);
+    ASSERT_TRUE(database) << qPrintable(error);
+    for (const QString& serial : {QStringLiteral("SN-SP1"), QStringLiteral("SN-SP2")}) {
+        const auto history = ResultQueries(*database).history(serial, &error);
+        ASSERT_TRUE(history && history->size() == 1) << qPrintable(serial) << qPrintable(error);
+        EXPECT_EQ(history->first().status, UnitStatus::Pass);
+    }
+    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 2 · passed 2")))
+        << qPrintable(view->countersLabel()->text());
+}
+
+// With no spool (its folder cannot be made), a verdict the server did not take is NOT RECORDED:
+// red, nothing else tested, until the server takes it.
+TEST_F(MainWindowProductionTest,
+       WithNoSpoolAPassTheDatabaseDidNotTakeIsShownNotRecordedUntilTheServerTakesIt)
+{
+    if (PostgresServer::skipRequested())
+        GTEST_SKIP() << "OPENTOP_TEST_PG_SKIP=1: PostgreSQL tests skipped on request";
+    {
+        // A file where the spool's folder would be.
+        QDir(ResultSpool::defaultFolder()).removeRecursively();
+        QDir().mkpath(QFileInfo(ResultSpool::defaultFolder()).absolutePath());
+        QFile blocker(ResultSpool::defaultFolder());
+        ASSERT_TRUE(blocker.open(QIODevice::WriteOnly)) << qPrintable(blocker.fileName());
+    }
     QString error;
     PostgresServer* server = PostgresServer::shared(&error);
     ASSERT_TRUE(server) << qPrintable(error);
