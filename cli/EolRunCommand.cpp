@@ -8,6 +8,7 @@
 #include "eol/RecipeChecker.h"
 #include "eol/RecipeFile.h"
 #include "eol/ResultWriter.h"
+#include "eol/StationSafeState.h"
 #include "eol/UnitValuesCsv.h"
 #include "profile/ProfileRegistry.h"
 
@@ -202,6 +203,30 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
 
     if (!context.connectBus())
         return context.usageError() ? ExitUsage : ExitCommunication;
+
+    // A station killed mid-test may have left a motor turning in communication priority: the
+    // recipe's positions are made safe first, and what was found is said.
+    {
+        StationSafeState safe(context.client(), ProfileRegistry::builtIn(), *recipe);
+        QVector<PositionSafety> found;
+        QEventLoop loop;
+        safe.run([&](const QVector<PositionSafety>& f) {
+            found = f;
+            loop.quit();
+        });
+        loop.exec();
+        bool unsafe = false;
+        for (const PositionSafety& p : found) {
+            if (p.running.value_or(false) || (p.answered && !p.problem.isEmpty()))
+                err << tr("station: %1").arg(p.summary()) << Qt::endl;
+            unsafe = unsafe || (p.running.value_or(false) && p.busPriority && !p.stopConfirmed);
+        }
+        if (unsafe) {
+            err << tr("a drive of the station is not confirmed stopped; nothing was tested")
+                << Qt::endl;
+            return ExitMismatch;
+        }
+    }
 
     EolRun::Options options;
     options.serial = serial;

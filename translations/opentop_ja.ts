@@ -4802,112 +4802,127 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="51"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="60"/>
         <source>identifying</source>
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="64"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="73"/>
         <source>no drive answers at machine number %1</source>
         <translation>局番 %1 で応答するドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="65"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="74"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>局番 %1 のドライバを識別できません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 ドライバですが、レシピには %2 ドライバが必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>ドライバが機種を通知しません。レシピで許可されているのは %1 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="87"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="96"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>機種 %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="93"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="102"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>ファームウェア %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="100"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
         <source>no profile for the family %1</source>
         <translation>ファミリ %1 のプロファイルがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="132"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
         <source>cannot read whether the motor runs: %1</source>
         <translation>モータが運転中かどうかを読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="140"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="149"/>
         <source>its motor was running before the test</source>
         <translation>試験前からモータが運転していました</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="150"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>試験前にモータがすでに運転しています（中断された実行の残り？）。何も書き込んでいません: 先に停止してください（全停止、またはドライバ側で）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="151"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="160"/>
         <source>writing the settings</source>
         <translation>設定を書込み中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="200"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>writing the settings: %1</source>
         <translation>設定の書込み: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="208"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="217"/>
         <source>reading every setting back</source>
         <translation>全設定を読み戻し中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="223"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="232"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 を読み戻せません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="229"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 が値を保持しません: %2 に設定、読出し値 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
         <source>verifying the settings: %1</source>
         <translation>設定の照合: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="256"/>
+        <source>arming the communication-loss stop</source>
+        <translation>通信途絶停止を有効化中</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="261"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 を読み取れません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="274"/>
+        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
+        <translation>通信途絶停止を有効にできません（%1 = %2 s）: %3。これなしではモーターを起動しません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="306"/>
         <source>testing</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="246"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="310"/>
         <source>step %1 of %2: %3</source>
         <translation>ステップ %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="300"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="366"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -5664,139 +5679,149 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="85"/>
+        <location filename="../cli/EolRunCommand.cpp" line="86"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="91"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="91"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>Who tests it (default: the login name).</source>
         <translation>試験者（既定: ログイン名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="130"/>
+        <location filename="../cli/EolRunCommand.cpp" line="131"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="135"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="148"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="163"/>
+        <location filename="../cli/EolRunCommand.cpp" line="164"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <location filename="../cli/EolRunCommand.cpp" line="190"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="193"/>
+        <location filename="../cli/EolRunCommand.cpp" line="194"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="198"/>
+        <location filename="../cli/EolRunCommand.cpp" line="199"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="235"/>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="221"/>
+        <source>station: %1</source>
+        <translation>ステーション: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <source>a drive of the station is not confirmed stopped; nothing was tested</source>
+        <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="260"/>
+        <location filename="../cli/EolRunCommand.cpp" line="281"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="279"/>
+        <location filename="../cli/EolRunCommand.cpp" line="304"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="334"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="315"/>
+        <location filename="../cli/EolRunCommand.cpp" line="340"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="342"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="322"/>
+        <location filename="../cli/EolRunCommand.cpp" line="347"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -5828,64 +5853,80 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="172"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="168"/>
+        <location filename="../model/eol/EolStation.cpp" line="169"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="170"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>接続できません（%1）。自動で再試行中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="178"/>
+        <location filename="../model/eol/EolStation.cpp" line="179"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="182"/>
+        <location filename="../model/eol/EolStation.cpp" line="183"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="187"/>
+        <location filename="../model/eol/EolStation.cpp" line="188"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="195"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="197"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="198"/>
+        <location filename="../model/eol/EolStation.cpp" line="199"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/eol/EolStation.cpp" line="205"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/eol/EolStation.cpp" line="209"/>
+        <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
+        <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="213"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="226"/>
+        <location filename="../model/eol/EolStation.cpp" line="231"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <source>a drive of the station is not safe: %1</source>
+        <translation>ステーションのドライブが安全ではありません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="288"/>
+        <source>cancelled before it started</source>
+        <translation>開始前に取り消されました</translation>
     </message>
 </context>
 <context>
@@ -9284,17 +9325,17 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>結果データベース</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="149"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
         <source>A unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="151"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>製品 %1 を試験中です。キャンセルして「%2」を実行しますか？ 先にモータを停止し、製品は中止として記録します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="162"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="163"/>
         <source>cancelled to %1</source>
         <translation>「%1」のためキャンセル</translation>
     </message>
@@ -9432,22 +9473,22 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="166"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="197"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="204"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9456,175 +9497,187 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="238"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="235"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>試験 %1 · 合格 %2 · 不合格 %3 · 直行率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <source>Unit %1: making the station&apos;s drives safe first…</source>
+        <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="451"/>
+        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
+        <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="354"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1、未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（このステーションに保管）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
         <source>NOT RECORDED</source>
         <translation>未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="416"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="438"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
         <source>it does not answer</source>
         <translation>データベースが応答しません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="423"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="165"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="330"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="409"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="422"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="421"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="403"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="360"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11945,12 +11998,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSink</name>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="135"/>
+        <location filename="../model/eol/ResultSink.cpp" line="136"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開かれていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="204"/>
+        <location filename="../model/eol/ResultSink.cpp" line="205"/>
         <source>the results database refuses unit %1 (serial %2): %3</source>
         <translation>結果データベースがユニット %1（シリアル番号 %2）を拒否しています: %3</translation>
     </message>
@@ -11958,18 +12011,18 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSpool</name>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="66"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="67"/>
         <location filename="../model/eol/ResultSpool.cpp" line="103"/>
         <source>the station&apos;s spool %1: %2</source>
         <translation>ステーションの保管ファイル %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="70"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="71"/>
         <source>its folder cannot be made</source>
         <translation>フォルダーを作成できません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="130"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="131"/>
         <source>the station&apos;s spool %1: entry %2 cannot be read (%3)</source>
         <translation>ステーションの保管ファイル %1: 項目 %2 を読み取れません（%3）</translation>
     </message>
@@ -14150,6 +14203,74 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <location filename="../model/run/StartPreview.cpp" line="228"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>プログラム実行中、ドライバごとに 1 回確認します。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationSafeState</name>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="28"/>
+        <source>%1: no answer (%2); not checked</source>
+        <translation>%1: 応答なし（%2）。確認していません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="33"/>
+        <source>%1 was RUNNING (%2)</source>
+        <translation>%1 は運転中でした（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="36"/>
+        <source>: stopped by the station</source>
+        <translation>: ステーションが停止しました</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="39"/>
+        <source>%1 stopped</source>
+        <translation>%1 は停止中</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="42"/>
+        <source>; control given back to its inputs (I/O priority)</source>
+        <translation>。制御を入力端子に戻しました（I/O 優先）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="83"/>
+        <source>drive %1</source>
+        <translation>ドライブ %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="84"/>
+        <source>drive %1 (%2)</source>
+        <translation>ドライブ %1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="88"/>
+        <source>the recipe&apos;s family %1 is not known</source>
+        <translation>レシピの機種ファミリー %1 は不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="132"/>
+        <source>whether its motor runs cannot be read</source>
+        <translation>モーターが運転中かどうかを読み取れません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="143"/>
+        <source>it runs from its input terminals (I/O priority): not the station&apos;s to stop; stop it at the machine</source>
+        <translation>入力端子で運転しています（I/O 優先）: ステーションが停止するものではありません。機械側で停止してください</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="168"/>
+        <source>the stop was refused: %1</source>
+        <translation>停止指令が拒否されました: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="182"/>
+        <source>NOT CONFIRMED STOPPED: %1</source>
+        <translation>停止未確認: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="224"/>
+        <source>control could not be given back to its inputs: %1</source>
+        <translation>制御を入力端子に戻せません: %1</translation>
     </message>
 </context>
 <context>

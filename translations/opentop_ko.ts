@@ -4802,112 +4802,127 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="51"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="60"/>
         <source>identifying</source>
         <translation>식별 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="64"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="73"/>
         <source>no drive answers at machine number %1</source>
         <translation>국번 %1에서 응답하는 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="65"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="74"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>국번 %1의 드라이버가 식별되지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 드라이버입니다. 레시피에는 %2 드라이버가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 레시피가 허용하는 기종: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="87"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="96"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>기종 %1, 레시피가 허용하는 기종: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="93"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="102"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>펌웨어 %1, 레시피가 허용하는 펌웨어: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="100"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
         <source>no profile for the family %1</source>
         <translation>제품군 %1의 프로파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="132"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
         <source>cannot read whether the motor runs: %1</source>
         <translation>모터 운전 여부를 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="140"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="149"/>
         <source>its motor was running before the test</source>
         <translation>검사 전에 모터가 운전 중이었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="150"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>검사 전에 모터가 이미 운전 중입니다(중단된 검사가 남긴 상태?). 아무것도 쓰지 않았습니다: 먼저 정지하십시오(전체 정지 또는 드라이버에서)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="151"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="160"/>
         <source>writing the settings</source>
         <translation>설정 쓰는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="200"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>writing the settings: %1</source>
         <translation>설정 쓰는 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="208"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="217"/>
         <source>reading every setting back</source>
         <translation>모든 설정을 다시 읽는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="223"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="232"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1을(를) 다시 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="229"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1이(가) 값을 유지하지 않습니다: %2(으)로 설정했지만 %3(으)로 읽힘</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
         <source>verifying the settings: %1</source>
         <translation>설정 검증 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="256"/>
+        <source>arming the communication-loss stop</source>
+        <translation>통신 두절 정지를 설정하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="261"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="274"/>
+        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
+        <translation>통신 두절 정지를 설정할 수 없습니다(%1 = %2 s): %3. 이 기능 없이 모터를 기동하지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="306"/>
         <source>testing</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="246"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="310"/>
         <source>step %1 of %2: %3</source>
         <translation>단계 %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="300"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="366"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
@@ -5664,139 +5679,149 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="85"/>
+        <location filename="../cli/EolRunCommand.cpp" line="86"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="91"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="91"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>Who tests it (default: the login name).</source>
         <translation>검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="130"/>
+        <location filename="../cli/EolRunCommand.cpp" line="131"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="135"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="148"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="163"/>
+        <location filename="../cli/EolRunCommand.cpp" line="164"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <location filename="../cli/EolRunCommand.cpp" line="190"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="193"/>
+        <location filename="../cli/EolRunCommand.cpp" line="194"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="198"/>
+        <location filename="../cli/EolRunCommand.cpp" line="199"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="235"/>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="221"/>
+        <source>station: %1</source>
+        <translation>스테이션: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <source>a drive of the station is not confirmed stopped; nothing was tested</source>
+        <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="260"/>
+        <location filename="../cli/EolRunCommand.cpp" line="281"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="279"/>
+        <location filename="../cli/EolRunCommand.cpp" line="304"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="334"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="315"/>
+        <location filename="../cli/EolRunCommand.cpp" line="340"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="342"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="322"/>
+        <location filename="../cli/EolRunCommand.cpp" line="347"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -5828,64 +5853,80 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="172"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="168"/>
+        <location filename="../model/eol/EolStation.cpp" line="169"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="170"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="178"/>
+        <location filename="../model/eol/EolStation.cpp" line="179"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="182"/>
+        <location filename="../model/eol/EolStation.cpp" line="183"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="187"/>
+        <location filename="../model/eol/EolStation.cpp" line="188"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="195"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="197"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="198"/>
+        <location filename="../model/eol/EolStation.cpp" line="199"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/eol/EolStation.cpp" line="205"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/eol/EolStation.cpp" line="209"/>
+        <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
+        <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="213"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="226"/>
+        <location filename="../model/eol/EolStation.cpp" line="231"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <source>a drive of the station is not safe: %1</source>
+        <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="288"/>
+        <source>cancelled before it started</source>
+        <translation>시작 전에 취소됨</translation>
     </message>
 </context>
 <context>
@@ -9284,17 +9325,17 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>결과 데이터베이스</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="149"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
         <source>A unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="151"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>제품 %1을(를) 검사 중입니다. 검사를 취소하고 %2하시겠습니까? 먼저 모터를 정지하며, 제품은 중지됨으로 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="162"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="163"/>
         <source>cancelled to %1</source>
         <translation>%1하기 위해 취소함</translation>
     </message>
@@ -9432,22 +9473,22 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="166"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>READY</source>
         <translation>준비 완료</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="197"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="204"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9456,175 +9497,187 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="238"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="235"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>검사 %1 · 합격 %2 · 불합격 %3 · 직행률 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <source>Unit %1: making the station&apos;s drives safe first…</source>
+        <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="451"/>
+        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
+        <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="354"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1, 기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
         <source>%1 (kept on this station)</source>
         <translation>%1 (이 스테이션에 보관)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
         <source>NOT RECORDED</source>
         <translation>기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="416"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="438"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
         <source>it does not answer</source>
         <translation>데이터베이스가 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="423"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="165"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="330"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="409"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="422"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="421"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="403"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="360"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11945,12 +11998,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSink</name>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="135"/>
+        <location filename="../model/eol/ResultSink.cpp" line="136"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="204"/>
+        <location filename="../model/eol/ResultSink.cpp" line="205"/>
         <source>the results database refuses unit %1 (serial %2): %3</source>
         <translation>결과 데이터베이스가 유닛 %1(일련번호 %2)을 거부합니다: %3</translation>
     </message>
@@ -11958,18 +12011,18 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSpool</name>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="66"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="67"/>
         <location filename="../model/eol/ResultSpool.cpp" line="103"/>
         <source>the station&apos;s spool %1: %2</source>
         <translation>스테이션 보관 파일 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="70"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="71"/>
         <source>its folder cannot be made</source>
         <translation>폴더를 만들 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="130"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="131"/>
         <source>the station&apos;s spool %1: entry %2 cannot be read (%3)</source>
         <translation>스테이션 보관 파일 %1: 항목 %2을(를) 읽을 수 없습니다(%3)</translation>
     </message>
@@ -14150,6 +14203,74 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <location filename="../model/run/StartPreview.cpp" line="228"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>프로그램 실행 중 드라이버마다 한 번씩 확인합니다.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationSafeState</name>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="28"/>
+        <source>%1: no answer (%2); not checked</source>
+        <translation>%1: 응답 없음(%2), 확인하지 않음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="33"/>
+        <source>%1 was RUNNING (%2)</source>
+        <translation>%1이(가) 운전 중이었습니다(%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="36"/>
+        <source>: stopped by the station</source>
+        <translation>: 스테이션이 정지시켰습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="39"/>
+        <source>%1 stopped</source>
+        <translation>%1 정지 상태</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="42"/>
+        <source>; control given back to its inputs (I/O priority)</source>
+        <translation>; 제어를 입력 단자로 되돌렸습니다(I/O 우선)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="83"/>
+        <source>drive %1</source>
+        <translation>드라이브 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="84"/>
+        <source>drive %1 (%2)</source>
+        <translation>드라이브 %1(%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="88"/>
+        <source>the recipe&apos;s family %1 is not known</source>
+        <translation>레시피의 제품군 %1을(를) 알 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="132"/>
+        <source>whether its motor runs cannot be read</source>
+        <translation>모터가 운전 중인지 읽을 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="143"/>
+        <source>it runs from its input terminals (I/O priority): not the station&apos;s to stop; stop it at the machine</source>
+        <translation>입력 단자로 운전 중입니다(I/O 우선): 스테이션이 정지할 대상이 아닙니다. 기계에서 정지하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="168"/>
+        <source>the stop was refused: %1</source>
+        <translation>정지 명령이 거부되었습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="182"/>
+        <source>NOT CONFIRMED STOPPED: %1</source>
+        <translation>정지 미확인: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="224"/>
+        <source>control could not be given back to its inputs: %1</source>
+        <translation>제어를 입력 단자로 되돌릴 수 없습니다: %1</translation>
     </message>
 </context>
 <context>

@@ -4802,112 +4802,127 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="51"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="60"/>
         <source>identifying</source>
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="64"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="73"/>
         <source>no drive answers at machine number %1</source>
         <translation>機號 %1 沒有驅動器回應</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="65"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="74"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>無法識別機號 %1 的驅動器：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>為 %1 驅動器，配方需要 %2 驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>驅動器不回報機型，而配方僅允許 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="87"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="96"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>機型為 %1，配方允許 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="93"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="102"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>韌體為 %1，配方允許 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="100"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
         <source>no profile for the family %1</source>
         <translation>沒有 %1 系列的定義檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="132"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
         <source>cannot read whether the motor runs: %1</source>
         <translation>無法讀取馬達是否運轉：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="140"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="149"/>
         <source>its motor was running before the test</source>
         <translation>測試前馬達已在運轉</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="150"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>測試前馬達已在運轉 (先前中斷的測試所遺留？)；未寫入任何資料：請先停止馬達 (全部停止，或在驅動器上操作)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="151"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="160"/>
         <source>writing the settings</source>
         <translation>正在寫入設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="200"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>writing the settings: %1</source>
         <translation>寫入設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="208"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="217"/>
         <source>reading every setting back</source>
         <translation>正在回讀所有設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="223"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="232"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 無法回讀：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="229"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 未保持其值：設定為 %2，讀取為 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
         <source>verifying the settings: %1</source>
         <translation>驗證設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="256"/>
+        <source>arming the communication-loss stop</source>
+        <translation>啟用通訊中斷停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="261"/>
+        <source>cannot read %1: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="274"/>
+        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
+        <translation>無法啟用通訊中斷停止（%1 = %2 s）：%3；沒有它不會啟動馬達</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="306"/>
         <source>testing</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="246"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="310"/>
         <source>step %1 of %2: %3</source>
         <translation>步驟 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="300"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="366"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -5664,139 +5679,149 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="85"/>
+        <location filename="../cli/EolRunCommand.cpp" line="86"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="91"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="91"/>
+        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="93"/>
         <source>Who tests it (default: the login name).</source>
         <translation>測試人員 (預設：登入名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
         <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="130"/>
+        <location filename="../cli/EolRunCommand.cpp" line="131"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="135"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="148"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="163"/>
+        <location filename="../cli/EolRunCommand.cpp" line="164"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <location filename="../cli/EolRunCommand.cpp" line="190"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="193"/>
+        <location filename="../cli/EolRunCommand.cpp" line="194"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：單元 %1（開始於 %2）因工作站程序已結束而未完成，現已記錄為「中斷」。請確認其馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="198"/>
+        <location filename="../cli/EolRunCommand.cpp" line="199"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 筆結果尚未能送到結果資料庫</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="235"/>
-        <location filename="../cli/EolRunCommand.cpp" line="256"/>
+        <location filename="../cli/EolRunCommand.cpp" line="221"/>
+        <source>station: %1</source>
+        <translation>工作站：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <source>a drive of the station is not confirmed stopped; nothing was tested</source>
+        <translation>工作站有驅動器未確認停止；未進行任何檢測</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="260"/>
+        <location filename="../cli/EolRunCommand.cpp" line="281"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="279"/>
+        <location filename="../cli/EolRunCommand.cpp" line="304"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="334"/>
         <source>rev. %1</source>
         <translation>版次 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="315"/>
+        <location filename="../cli/EolRunCommand.cpp" line="340"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果「未」記錄：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="342"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果資料庫沒有回應：結果已保存在本工作站（%1），下次工作站程式連上資料庫時會送出</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="322"/>
+        <location filename="../cli/EolRunCommand.cpp" line="347"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未確認馬達已停止：%1</translation>
     </message>
@@ -5828,64 +5853,80 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="172"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="168"/>
+        <location filename="../model/eol/EolStation.cpp" line="169"/>
         <source>opening the results database</source>
         <translation>正在開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="170"/>
+        <location filename="../model/eol/EolStation.cpp" line="171"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>無法連線（%1）；自動重試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="178"/>
+        <location filename="../model/eol/EolStation.cpp" line="179"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="182"/>
+        <location filename="../model/eol/EolStation.cpp" line="183"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="187"/>
+        <location filename="../model/eol/EolStation.cpp" line="188"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="195"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在開啟結果資料庫；請稍後再試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="197"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="198"/>
+        <location filename="../model/eol/EolStation.cpp" line="199"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/eol/EolStation.cpp" line="205"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/eol/EolStation.cpp" line="209"/>
+        <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
+        <translation>工作站的驅動器確認安全後，單元 %1 會立即開始</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="213"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="226"/>
+        <location filename="../model/eol/EolStation.cpp" line="231"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <source>a drive of the station is not safe: %1</source>
+        <translation>工作站有驅動器不安全：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="288"/>
+        <source>cancelled before it started</source>
+        <translation>開始前已取消</translation>
     </message>
 </context>
 <context>
@@ -9284,17 +9325,17 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="149"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
         <source>A unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="151"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>產品 %1 正在測試中。要取消測試並%2嗎？會先停止其馬達，並將此產品記錄為已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="162"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="163"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -9432,22 +9473,22 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="166"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
         <source>READY</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="197"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="204"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9456,175 +9497,187 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="210"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="238"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="218"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="235"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已測試 %1 · 合格 %2 · 不合格 %3 · 一次良率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <source>Unit %1: making the station&apos;s drives safe first…</source>
+        <translation>單元 %1：先使工作站的驅動器進入安全狀態…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="451"/>
+        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
+        <translation>正在使配方的驅動器進入安全狀態：逐一讀取、停止仍在運轉者、將控制權交還其輸入端子…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="306"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
         <source>TESTING</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="354"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="345"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
         <source>NOT RECORDED</source>
         <translation>未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="416"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="438"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
         <source>it does not answer</source>
         <translation>資料庫沒有回應</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="423"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="165"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="330"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="409"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="422"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="421"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="403"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="360"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -11945,12 +11998,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSink</name>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="135"/>
+        <location filename="../model/eol/ResultSink.cpp" line="136"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="204"/>
+        <location filename="../model/eol/ResultSink.cpp" line="205"/>
         <source>the results database refuses unit %1 (serial %2): %3</source>
         <translation>結果資料庫拒絕單元 %1（序號 %2）：%3</translation>
     </message>
@@ -11958,18 +12011,18 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSpool</name>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="66"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="67"/>
         <location filename="../model/eol/ResultSpool.cpp" line="103"/>
         <source>the station&apos;s spool %1: %2</source>
         <translation>工作站暫存檔 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="70"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="71"/>
         <source>its folder cannot be made</source>
         <translation>無法建立其資料夾</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSpool.cpp" line="130"/>
+        <location filename="../model/eol/ResultSpool.cpp" line="131"/>
         <source>the station&apos;s spool %1: entry %2 cannot be read (%3)</source>
         <translation>工作站暫存檔 %1：第 %2 筆無法讀取（%3）</translation>
     </message>
@@ -14150,6 +14203,74 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <location filename="../model/run/StartPreview.cpp" line="228"/>
         <source>You are asked once per drive while the program runs.</source>
         <translation>程式執行期間，每台驅動器只會詢問一次。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationSafeState</name>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="28"/>
+        <source>%1: no answer (%2); not checked</source>
+        <translation>%1：沒有回應（%2）；未檢查</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="33"/>
+        <source>%1 was RUNNING (%2)</source>
+        <translation>%1 原本在運轉（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="36"/>
+        <source>: stopped by the station</source>
+        <translation>：已由工作站停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="39"/>
+        <source>%1 stopped</source>
+        <translation>%1 已停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="42"/>
+        <source>; control given back to its inputs (I/O priority)</source>
+        <translation>；控制權已交還其輸入端子（I/O 優先）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="83"/>
+        <source>drive %1</source>
+        <translation>驅動器 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="84"/>
+        <source>drive %1 (%2)</source>
+        <translation>驅動器 %1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="88"/>
+        <source>the recipe&apos;s family %1 is not known</source>
+        <translation>配方的機種系列 %1 未知</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="132"/>
+        <source>whether its motor runs cannot be read</source>
+        <translation>無法讀取馬達是否在運轉</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="143"/>
+        <source>it runs from its input terminals (I/O priority): not the station&apos;s to stop; stop it at the machine</source>
+        <translation>它由輸入端子控制運轉（I/O 優先）：不由工作站停止；請在機台上停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="168"/>
+        <source>the stop was refused: %1</source>
+        <translation>停止命令被拒絕：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="182"/>
+        <source>NOT CONFIRMED STOPPED: %1</source>
+        <translation>未確認停止：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationSafeState.cpp" line="224"/>
+        <source>control could not be given back to its inputs: %1</source>
+        <translation>無法將控制權交還其輸入端子：%1</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 #include "eol/EolDriveRun.h"
 
+#include "ModelLog.h"
 #include "eol/EolTarget.h"
 #include "eol/Recipe.h"
 #include "files/RestorePlan.h"
@@ -14,6 +15,14 @@
 #include <QTimer>
 
 namespace opentop {
+
+namespace {
+// A drive with a communication-loss stop (the DC controller) brakes by itself this long after
+// the station's last frame while a unit runs: a killed station leaves no motor turning. Long
+// enough for a retried request on a busy bus (the station asks every drive every ~100 ms).
+constexpr double kCommLossS = 2.0;
+const QString kCommLossRole = QStringLiteral("commLossTime");
+} // namespace
 
 EolDriveRun::EolDriveRun(ModbusClient* client, const ProfileRegistry& registry, RunControl* run,
                          const RecipePosition& position, int index,
@@ -239,6 +248,61 @@ void EolDriveRun::verify()
 
 void EolDriveRun::test()
 {
+    const ParameterMeta* loss = RoleEvaluator::parameter(m_session->profile(), kCommLossRole);
+    if (!loss) {
+        runSteps();
+        return;
+    }
+    setPhase(Phase::Test, tr("arming the communication-loss stop"));
+    m_session->read(loss->name, [this, loss](const DeviceSession::Outcome& r) {
+        if (m_ended)
+            return;
+        if (!r.ok) {
+            fail(tr("cannot read %1: %2").arg(loss->label, r.error));
+            return;
+        }
+        m_commLossBefore = ValueCodec::formatNumber(r.value.number, loss->spec.decimals);
+        DeviceSession::WriteOptions options;
+        options.explicitCommand = true; // the station's safety while its motor turns
+        m_session->write(
+            loss->name, ValueCodec::formatNumber(kCommLossS, 1), options,
+            [this, loss](const DeviceSession::Outcome& w) {
+                if (m_ended)
+                    return;
+                if (!w.ok) {
+                    m_commLossBefore.clear();
+                    fail(tr("the communication-loss stop cannot be armed (%1 = %2 "
+                            "s): %3; the motor is not started without it")
+                             .arg(loss->label, ValueCodec::formatNumber(kCommLossS, 1), w.error));
+                    return;
+                }
+                runSteps();
+            });
+    });
+}
+
+void EolDriveRun::disarmCommLoss(std::function<void()> then)
+{
+    const ParameterMeta* loss = RoleEvaluator::parameter(m_session->profile(), kCommLossRole);
+    if (!loss || m_commLossBefore.isEmpty()) {
+        then();
+        return;
+    }
+    // Back to what the drive held (in its working memory only: the product's stored value was
+    // never changed).
+    DeviceSession::WriteOptions options;
+    options.explicitCommand = true;
+    m_session->write(loss->name, std::exchange(m_commLossBefore, QString()), options,
+                     [then](const DeviceSession::Outcome& w) {
+                         if (!w.ok)
+                             qCWarning(lcModel)
+                                 << "communication-loss stop not restored" << w.error;
+                         then();
+                     });
+}
+
+void EolDriveRun::runSteps()
+{
     setPhase(Phase::Test, tr("testing"));
     m_steps = new EolStepRunner(m_session, m_run, m_position.steps, m_timing, this);
     connect(m_steps, &EolStepRunner::stepStarted, this, [this](int index, const QString& title) {
@@ -255,12 +319,14 @@ void EolDriveRun::test()
     m_steps->start([this](const EolStepRunner::Result& r) {
         m_stopConfirmed = r.stopConfirmed;
         m_stopDetail = r.stopDetail;
-        if (!r.ok) {
-            fail(r.failure);
-            return;
-        }
-        m_ok = true;
-        finish();
+        disarmCommLoss([this, r] {
+            if (!r.ok) {
+                fail(r.failure);
+                return;
+            }
+            m_ok = true;
+            finish();
+        });
     });
 }
 

@@ -71,6 +71,8 @@ private:
     void written(const RestorePlan& plan);
     void verify();
     void test();
+    void runSteps();
+    void disarmCommLoss(std::function<void()> then);
     void setPhase(Phase phase, const QString& text);
     void fail(const QString& reason);
     void finish();
@@ -94,6 +96,7 @@ private:
     QVector<WrittenValue> m_written;
     QVector<Measurement> m_measurements;
     DeviceSession* m_session = nullptr;
+    QString m_commLossBefore; // the drive's own value while the station's is armed
     Restorer* m_restorer = nullptr;
     EolStepRunner* m_steps = nullptr;
 };

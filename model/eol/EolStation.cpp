@@ -63,6 +63,7 @@ bool EolStation::loadRecipe(const QString& path, QStringList* problems)
     m_checksum = checksum;
     m_recipePath = path;
     m_hasRecipe = true;
+    m_safe = false; // its positions are made safe before its first unit
     m_csv.reset();
     return true;
 }
@@ -204,6 +205,10 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         *error = tr("not connected to a bus");
         return false;
     }
+    if (m_pendingStart) {
+        *error = tr("unit %1 starts as soon as the station's drives are safe").arg(m_pendingSerial);
+        return false;
+    }
     if (serial.trimmed().isEmpty()) {
         *error = tr("no serial number");
         return false;
@@ -233,6 +238,32 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         for (const UnitValuesCsv::Value& v : *values)
             options.unitValues[v.machineNumber][v.parameter] = v.value;
     }
+    if (!m_safe || m_safeState) {
+        // First the positions are made safe (a station killed mid-test may have left a motor
+        // turning); the unit starts by itself once they are, or startRefused() says why not.
+        m_pendingSerial = options.serial;
+        m_pendingStart = [this, client = QPointer<ModbusClient>(client), traffic, options] {
+            QString why;
+            if (!client)
+                why = tr("not connected to a bus");
+            else if (!m_safe)
+                why = tr("a drive of the station is not safe: %1").arg(unsafeText());
+            else
+                begin(client, traffic, options);
+            if (!why.isEmpty())
+                emit startRefused(options.serial, why);
+        };
+        makeSafe(client);
+        return true;
+    }
+    begin(client, traffic, options);
+    return true;
+}
+
+void EolStation::begin(ModbusClient* client, TrafficLog* traffic, const EolRun::Options& given)
+{
+    EolRun::Options options = given;
+    options.traffic = traffic;
     delete m_run;
     m_run = new EolRun(client, ProfileRegistry::builtIn(), m_recipe, options, this);
     connect(m_run, &EolRun::phaseChanged, this, &EolStation::phaseChanged);
@@ -244,25 +275,41 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
             [run = m_run.data()](const QString& why) { run->connectionLost(why); });
     m_unconfirmed.clear();
     m_storeError.clear();
+    m_client = client;
     emit unitStarted(options.serial);
     m_run->start([this](const UnitRecord& record) { finished(record); });
-    return true;
 }
 
 void EolStation::cancel(const QString& reason)
 {
+    if (m_pendingStart) { // nothing was sent for it yet
+        m_pendingStart = nullptr;
+        emit startRefused(std::exchange(m_pendingSerial, QString()),
+                          reason.isEmpty() ? tr("cancelled before it started") : reason);
+        return;
+    }
     if (m_run)
         m_run->cancel(reason);
 }
 
 void EolStation::connectionLost(const QString& error)
 {
+    m_safe = false;
     if (m_run)
         m_run->connectionLost(error);
 }
 
 void EolStation::finished(const UnitRecord& record)
 {
+    // A unit that did not end cleanly may have left a motor turning or a drive in communication
+    // priority: checked again at once, before the next unit.
+    if (record.status == UnitStatus::Aborted || (m_run && !m_run->unconfirmedStops().isEmpty())) {
+        m_safe = false;
+        QTimer::singleShot(0, this, [this] {
+            if (m_client)
+                makeSafe(m_client);
+        });
+    }
     m_unconfirmed = m_run ? m_run->unconfirmedStops() : QStringList();
     m_storeError = m_run ? m_run->storeError() : QString();
     m_lastSpooled = m_run && m_run->spooled();
@@ -340,6 +387,40 @@ QString EolStation::resultsWaitingError() const
 void EolStation::sendWaitingResultsNow()
 {
     m_writer->flushNow();
+}
+
+void EolStation::makeSafe(ModbusClient* client)
+{
+    if (!client || !m_hasRecipe || m_safeState || isRunning())
+        return;
+    m_client = client;
+    m_safeState = new StationSafeState(client, ProfileRegistry::builtIn(), m_recipe, this);
+    m_safeState->setStopTiming(m_stopTiming);
+    emit safetyChanged();
+    m_safeState->run([this](const QVector<PositionSafety>& found) {
+        m_safeState->deleteLater();
+        m_safeState = nullptr;
+        m_safety = found;
+        m_safe = unsafeText().isEmpty();
+        emit safetyChanged();
+        if (std::function<void()> pending = std::exchange(m_pendingStart, nullptr)) {
+            m_pendingSerial.clear();
+            pending();
+        }
+    });
+}
+
+QString EolStation::unsafeText() const
+{
+    QStringList lines;
+    for (const PositionSafety& p : m_safety) {
+        // No answer is no unit in the fixture yet; running from its inputs is the machine's.
+        const bool leftRunning = p.running.value_or(false) && p.busPriority && !p.stopConfirmed;
+        const bool leftInBusControl = p.stopConfirmed && !p.problem.isEmpty();
+        if (leftRunning || leftInBusControl)
+            lines << p.summary();
+    }
+    return lines.join(QStringLiteral("; "));
 }
 
 } // namespace opentop

@@ -3,6 +3,7 @@
 #include "eol/EolRun.h"
 #include "eol/Recipe.h"
 #include "eol/StationLease.h"
+#include "eol/StationSafeState.h"
 #include "eol/UnitRecord.h"
 
 #include <QCoreApplication>
@@ -79,11 +80,15 @@ public:
 
     // Starts a unit: false with *error (and nothing sent) when no recipe, no database, a per-unit
     // value missing or not allowed, or a unit already running. `typed`: the operator's values.
+    // When the positions were not made safe yet, that is done first and the unit starts once it
+    // is (unitStarted), or startRefused() says why it did not.
     bool start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
                const QHash<int, QHash<QString, double>>& typed, QString* error);
     void cancel(const QString& reason = QString());
     void connectionLost(const QString& error);
     bool isRunning() const { return m_run && m_run->isRunning(); }
+    // A unit start() accepted that waits for the drives to be made safe.
+    bool isStarting() const { return bool(m_pendingStart); }
     EolRun* run() const { return m_run; }
     qint64 elapsedMs() const { return m_run ? m_run->elapsedMs() : 0; }
     const Counters& counters() const { return m_counters; }
@@ -96,6 +101,14 @@ public:
     const std::optional<UnitRecord>& unsavedResult() const { return m_unsaved; }
     int nextRetrySeconds() const;
     void retryUnsavedNow();
+    // Puts the recipe's positions in a safe state (StationSafeState): stopped, control given back
+    // to their inputs. Done when production starts and again after a unit that did not end
+    // cleanly; start() refuses units until it has been done and found nothing unsafe.
+    void makeSafe(ModbusClient* client);
+    bool isMakingSafe() const { return bool(m_safeState); }
+    bool isSafe() const { return m_safe; }
+    const QVector<PositionSafety>& safety() const { return m_safety; }
+    void setStopTiming(const StopConfirmer::Timing& timing) { m_stopTiming = timing; }
     // The last verdict is kept in the station's spool, not yet in the results database.
     bool lastResultSpooled() const { return m_lastSpooled; }
     // Records in the spool, waiting for the results database, and why.
@@ -117,6 +130,9 @@ signals:
     void unsavedResultChanged(bool recorded, const QString& error);
     void resultsWaitingChanged(int waiting, const QString& error);
     void interruptedFound(const QVector<opentop::StationLease::Leftover>& units);
+    void safetyChanged(); // making safe began or ended (safety() holds what it found)
+    // A unit start() accepted while the drives were made safe did not start after all.
+    void startRefused(const QString& serial, const QString& why);
     // The answer to openDatabase(): `error` names the database and why not.
     void databaseOpened(bool ok, const QString& error);
 
@@ -124,6 +140,8 @@ private:
     void finished(const UnitRecord& record);
     void scheduleRetry();
     void count(const UnitRecord& record); // a recorded verdict, into this shift's counters
+    void begin(ModbusClient* client, TrafficLog* traffic, const EolRun::Options& options);
+    QString unsafeText() const;
 
     Recipe m_recipe;
     bool m_hasRecipe = false;
@@ -143,6 +161,13 @@ private:
     std::optional<UnitRecord> m_unsaved;
     bool m_lastSpooled = false;
     QVector<StationLease::Leftover> m_interrupted;
+    QPointer<StationSafeState> m_safeState;
+    QPointer<ModbusClient> m_client;
+    bool m_safe = false;
+    QVector<PositionSafety> m_safety;
+    std::function<void()> m_pendingStart;
+    QString m_pendingSerial;
+    StopConfirmer::Timing m_stopTiming;
     QTimer m_retry;
     int m_retryDelayS = 1;
     QString m_dbUrl;

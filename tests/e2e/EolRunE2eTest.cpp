@@ -213,28 +213,75 @@ TEST_F(EolRunE2e, AStationKilledMidUnitLeavesNoPassAndTheNextRunSaysSo)
     EXPECT_EQ(record->status, UnitStatus::Running);
     EXPECT_TRUE(turning(1)) << "nobody was left to stop it";
 
-    // The next run of this station: the leftover becomes interrupted, and a motor still turning
-    // is neither written nor started.
+    // The next run of this station (issue 25 item 2): the leftover is interrupted and named, the
+    // motor left turning is stopped with its own stop, confirmed, given back to its inputs, and
+    // only then is the unit tested.
     QProcess next;
     next.start(cliProgram(),
                runArgs(sim.pty, writeRecipe(dir, 1, 1), QStringLiteral("SN-K"), db, 1));
     const CliResult r = finishCli(next, 60000);
-    EXPECT_EQ(r.code, 4) << (r.out + r.err).toStdString();
-    EXPECT_TRUE(r.err.contains(QStringLiteral("now recorded as interrupted")))
+    EXPECT_EQ(r.code, 0) << (r.out + r.err).toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("unit SN-K (begun ")) &&
+                r.err.contains(QStringLiteral("now recorded as interrupted")))
         << r.err.toStdString();
-    EXPECT_TRUE(lastEvent(r.out, QStringLiteral("result"))
-                    .value(QStringLiteral("reason"))
-                    .toString()
-                    .contains(QStringLiteral("already running")))
-        << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("station: drive 1 (belt) was RUNNING")) &&
+                r.err.contains(QStringLiteral("stopped by the station")))
+        << r.err.toStdString();
     QString error;
     const auto db2 = ResultDatabase::open(db, &error);
     ASSERT_TRUE(db2) << error.toStdString();
     const auto history = ResultQueries(*db2).history(QStringLiteral("SN-K"), &error);
     ASSERT_TRUE(history && history->size() == 2) << error.toStdString();
     EXPECT_EQ(history->first().status, UnitStatus::Interrupted);
-    EXPECT_EQ(history->last().status, UnitStatus::Fail);
-    EXPECT_TRUE(turning(1));
+    EXPECT_EQ(history->last().status, UnitStatus::Pass);
+    EXPECT_FALSE(turning(1));
+    EXPECT_EQ(sim.get(1, 0x100D, 3), 1) << "control given back to the drive's inputs";
+}
+
+// A DC controller has a communication-loss stop (config.comm_loss_time): the station arms it
+// while its unit runs, so a station killed mid-unit leaves no motor turning for long.
+TEST(EolRunDcE2e, AStationKilledMidUnitLeavesADcMotorThatStopsByItselfWithinTwoSeconds)
+{
+    SimProcess sim;
+    QString error;
+    ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dcpid@7")}, &error))
+        << error.toStdString();
+    QTemporaryDir dir;
+    std::optional<Recipe> recipe = RecipeFile::load(
+        QStringLiteral(OPENTOP_SOURCE_DIR "/docs/examples/recipe-dcpid.json"), &error);
+    ASSERT_TRUE(recipe) << error.toStdString();
+    for (RecipeStep& step : recipe->positions[0].steps)
+        if (step.type == RecipeStep::Type::Hold)
+            step.duration = 60;
+    const QString path = dir.filePath(QStringLiteral("recipe-dc.json"));
+    ASSERT_TRUE(RecipeFile::save(*recipe, path, &error)) << error.toStdString();
+    const int before = sim.get(7, 0x008E, 3);
+
+    QProcess process;
+    QByteArray seen;
+    ASSERT_TRUE(startAndWaitForHold(
+        process,
+        {QStringLiteral("--port"), sim.pty, QStringLiteral("eol"), QStringLiteral("run"), path,
+         QStringLiteral("--serial"), QStringLiteral("SN-DC-K"), QStringLiteral("--db"),
+         dir.filePath(QStringLiteral("results.db")), QStringLiteral("--value"),
+         QStringLiteral("7:config.brake_current=1"), QStringLiteral("--json")},
+        &seen))
+        << seen.toStdString();
+    ASSERT_NE(sim.get(7, 0x0010, 3), 0) << "the motor runs in the hold step";
+    EXPECT_EQ(sim.get(7, 0x008E, 3), 20) << "armed at 2.0 s while the unit runs";
+    process.kill(); // SIGKILL: the station cannot stop anything any more
+    QElapsedTimer sinceKill;
+    sinceKill.start();
+    process.waitForFinished(5000);
+    while (sim.get(7, 0x0010, 3) != 0 && sinceKill.elapsed() < 10000)
+        QThread::msleep(100);
+    const qint64 stoppedAfterMs = sinceKill.elapsed();
+    std::printf("DC motor stopped by itself %.1f s after the station was killed\n",
+                stoppedAfterMs / 1000.0);
+    EXPECT_EQ(sim.get(7, 0x0010, 3), 0) << "still driven 10 s after the kill";
+    // 2.0 s after the last frame, then the controller's braking.
+    EXPECT_LT(stoppedAfterMs, 4000);
+    EXPECT_NE(before, -1);
 }
 
 // The program as delivered says "1 position, 5 settings" in English, not "1 position(s)": its

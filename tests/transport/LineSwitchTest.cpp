@@ -97,16 +97,22 @@ private:
                 continue;
             current.request = buffer.left(8);
             buffer.remove(0, 8);
+            QByteArray reply;
             if (current.request.at(0) != 0) {
-                const QByteArray reply =
-                    RtuFrame::encodeReadReply(quint8(current.request.at(0)), 0x03, {1234});
+                reply = RtuFrame::encodeReadReply(quint8(current.request.at(0)), 0x03, {1234});
                 // Noted before the write: a thread preempted after writing would note a time
                 // later than the client saw the reply.
                 current.repliedMs = nowMs();
+            }
+            {
+                // Also before the write: the client may finish and the test read seen() before
+                // this thread runs again.
+                std::lock_guard<std::mutex> lock(m_mutex);
+                m_seen.push_back(current);
+            }
+            if (!reply.isEmpty()) {
                 EXPECT_EQ(::write(m_master, reply.constData(), size_t(reply.size())), reply.size());
             }
-            std::lock_guard<std::mutex> lock(m_mutex);
-            m_seen.push_back(current);
         }
     }
 

@@ -389,7 +389,7 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="245"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>
@@ -397,7 +397,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="416"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="438"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>

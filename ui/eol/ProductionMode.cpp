@@ -133,6 +133,7 @@ void ProductionMode::setActive(bool active)
         if (!m_station->hasDatabase() && !m_station->isOpeningDatabase())
             m_station->openDatabase(m_station->databaseUrl());
         m_view->refresh();
+        m_view->makeSafe();
         m_view->focusSerial();
     } else {
         for (QDockWidget* dock : m_hiddenDocks)

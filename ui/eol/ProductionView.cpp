@@ -138,7 +138,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
     escape->setContext(Qt::WidgetWithChildrenShortcut);
     connect(escape, &QShortcut::activated, this, [this] {
-        if (m_station->isRunning())
+        if (m_station->isRunning() || m_station->isStarting())
             m_station->cancel();
     });
     connect(m_operator, &QLineEdit::textChanged, m_station, &EolStation::setOperatorName);
@@ -158,6 +158,13 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     connect(m_station, &EolStation::databaseOpened, this, [this] { refresh(); });
     connect(m_station, &EolStation::resultsWaitingChanged, this, [this] { refreshNotice(); });
     connect(m_station, &EolStation::interruptedFound, this, [this] { refreshNotice(); });
+    connect(m_station, &EolStation::safetyChanged, this, [this] { refreshNotice(); });
+    connect(m_station, &EolStation::startRefused, this, [this](const QString&, const QString& why) {
+        showVerdict(tr("NOT STARTED"), QStringLiteral("#8a6d00"), why);
+        m_cancel->setEnabled(false);
+        refreshRecipe();
+        focusSerial();
+    });
     connect(m_station, &EolStation::recording, this, [this](const QString& what) {
         if (!m_station->run())
             return;
@@ -200,8 +207,16 @@ bool ProductionView::openRecipe(const QString& path)
         return false;
     }
     refreshRecipe();
+    if (isVisible())
+        makeSafe();
     focusSerial();
     return true;
+}
+
+void ProductionView::makeSafe()
+{
+    if (ModbusClient* client = m_client())
+        m_station->makeSafe(client);
 }
 
 void ProductionView::chooseRecipe()
@@ -236,7 +251,7 @@ void ProductionView::refreshRecipe()
                             .arg(m_station->station(), m_station->databaseText(),
                                  m_station->hasUnitValues() ? tr("loaded") : tr("none")));
     m_serial->setEnabled(m_station->hasRecipe() && !m_station->isRunning() &&
-                         !m_station->hasUnsavedResult());
+                         !m_station->isStarting() && !m_station->hasUnsavedResult());
 }
 
 void ProductionView::refreshCounters()
@@ -288,6 +303,13 @@ void ProductionView::startUnit()
     if (!m_station->start(m_client(), m_traffic, serial, typed, &error)) {
         showVerdict(tr("NOT STARTED"), QStringLiteral("#8a6d00"), error);
         focusSerial();
+        return;
+    }
+    if (!m_station->isRunning()) { // it starts once the station's drives are safe
+        showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"),
+                    tr("Unit %1: making the station's drives safe first…").arg(serial));
+        m_serial->setEnabled(false);
+        m_cancel->setEnabled(true);
     }
 }
 
@@ -425,6 +447,13 @@ void ProductionView::refreshNotice()
                      .arg(unit.serial, QDateTime::fromString(unit.started, Qt::ISODateWithMs)
                                            .toLocalTime()
                                            .toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
+    if (m_station->isMakingSafe())
+        lines << tr("Making the recipe's drives safe: reading each, stopping one left running, "
+                    "giving control back to their inputs…");
+    else
+        for (const PositionSafety& p : m_station->safety())
+            if (p.running.value_or(false) || (p.answered && !p.problem.isEmpty()))
+                lines << p.summary();
     m_notice->setText(lines.join(QLatin1Char('\n')));
     m_notice->setVisible(!lines.isEmpty());
 }

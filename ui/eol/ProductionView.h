@@ -35,6 +35,8 @@ public:
     QLabel* countersLabel() const { return m_counters; }
     QLabel* databaseLabel() const { return m_database; }
     QLabel* noticeLabel() const { return m_notice; }
+    // The station makes the recipe's drives safe on the bus the window is connected to.
+    void makeSafe();
     QPushButton* cancelButton() const { return m_cancel; }
     QTableWidget* drivesTable() const { return m_drives; }
     QTableWidget* unitsTable() const { return m_units; }

@@ -13,6 +13,8 @@
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
 #include "eol/ResultSpool.h"
+#include "eol/ResultStore.h"
+#include "eol/StationLease.h"
 #include "workspace/DriveWorkspace.h"
 
 #include <QDir>
@@ -141,7 +143,10 @@ TEST_F(MainWindowProductionTest, QuittingWhileAUnitRunsCancelsItStopsTheMotorAnd
     QTest::keyClicks(view->serialField(), QStringLiteral("SN-Q1"));
     QTest::keyClick(view->serialField(), Qt::Key_Return);
     ASSERT_TRUE(waitFor(
-        [&] { return view->drivesTable()->item(0, 1)->text().contains(QLatin1String("hold")); },
+        [&] {
+            const QTableWidgetItem* now = view->drivesTable()->item(0, 1);
+            return now && now->text().contains(QLatin1String("hold"));
+        },
         20000));
     ASSERT_GT(speedOf(1), 0);
 
@@ -432,6 +437,8 @@ TEST_F(MainWindowProductionTest, StopAllChecksTheRecipesDrivesThoughNoScanFoundT
     QString db;
     ASSERT_TRUE(enterProduction(dir, &db));
     ASSERT_TRUE(window->production()->view()->openRecipe(recipeFile(dir, 1)));
+    // The station made its drives safe; then something starts drive 1 (a crash after that).
+    ASSERT_TRUE(waitFor([&] { return window->production()->station()->isSafe(); }, 20000));
     startDrive(1);
     ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }));
     window->drives()->remove(1); // as if the bus had never been scanned
@@ -445,4 +452,60 @@ TEST_F(MainWindowProductionTest, StopAllChecksTheRecipesDrivesThoughNoScanFoundT
         << qPrintable(stop->reportText());
     EXPECT_FALSE(stop->reportText().contains(QStringLiteral("No drives are known")))
         << qPrintable(stop->reportText());
+}
+
+// Issue 25 item 2: the station is started again after `kill -9` mid-unit. Its motor still turns
+// in communication priority and its unit is still 'running' in the database under a process that
+// is gone. Production mode names the interrupted serial, stops the motor with its own stop,
+// confirms it and gives the drive back to its inputs, all before any unit; the next serial then
+// runs.
+TEST_F(MainWindowProductionTest, ARestartAfterAKillNamesTheUnitAndStopsTheMotorItLeftRunning)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("results.db"));
+    {
+        QString error;
+        auto database = ResultDatabase::open(db, &error);
+        ASSERT_TRUE(database) << qPrintable(error);
+        StationLease gone(window->production()->station()->station(), QStringLiteral("opentop"));
+        ASSERT_TRUE(gone.renew(*database, &error)) << qPrintable(error);
+        ASSERT_TRUE(
+            database->exec(QStringLiteral("UPDATE station_leases SET pid = 999999999"), &error));
+        ResultStore store(*database);
+        store.setLease(gone.id());
+        UnitRecord left;
+        left.serial = QStringLiteral("SN-KILLED");
+        left.station = window->production()->station()->station();
+        ASSERT_TRUE(store.beginUnit(left, &error)) << qPrintable(error);
+    }
+    startDrive(1);
+    ASSERT_GT(speedOf(1), 0);
+
+    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    window->production()->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    ProductionView* view = window->production()->view();
+    EolStation* station = window->production()->station();
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir, 0.5)));
+    ASSERT_TRUE(waitFor([&] { return station->hasDatabase() && station->isSafe(); }, 30000))
+        << qPrintable(view->noticeLabel()->text());
+    EXPECT_EQ(speedOf(1), 0) << "stopped by the station before any unit";
+    EXPECT_EQ(simRegister(1, 0x100D), 1) << "given back to its inputs";
+    ASSERT_TRUE(
+        waitFor([&] { return view->noticeLabel()->text().contains(QLatin1String("SN-KILLED")); }));
+    const QString notice = view->noticeLabel()->text();
+    EXPECT_TRUE(notice.contains(QStringLiteral("Unit SN-KILLED")) &&
+                notice.contains(QStringLiteral("recorded as interrupted")))
+        << qPrintable(notice);
+    EXPECT_TRUE(notice.contains(QStringLiteral("drive 1 (belt) was RUNNING")) &&
+                notice.contains(QStringLiteral("stopped by the station")))
+        << qPrintable(notice);
+    EXPECT_TRUE(view->noticeLabel()->isVisible());
+
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-AFTER"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    ASSERT_TRUE(waitFor([&] { return view->unitsTable()->rowCount() == 1; }, 40000))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS"))
+        << qPrintable(view->reasonLabel()->text());
 }
