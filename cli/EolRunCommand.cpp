@@ -256,9 +256,11 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
                                        {QStringLiteral("seconds"), eol.elapsedMs() / 1000.0}});
                              return;
                          }
-                         out << QStringLiteral("[%1 s] %2: %3\n")
+                         // Progress on standard error: standard output is the unit's
+                         // measurements and verdict, for scripts.
+                         err << QStringLiteral("[%1 s] %2: %3\n")
                                     .arg(seconds(), tr("drive %1").arg(machineNumber), text);
-                         out.flush();
+                         err.flush();
                      });
     QObject::connect(&eol, &EolRun::measured, &eol, [&](const Measurement& m) {
         if (json) {

@@ -5785,43 +5785,43 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>工作站有驱动器未确认停止；未进行任何检测</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="260"/>
-        <location filename="../cli/EolRunCommand.cpp" line="281"/>
+        <location filename="../cli/EolRunCommand.cpp" line="262"/>
+        <location filename="../cli/EolRunCommand.cpp" line="283"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="288"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="288"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="304"/>
+        <location filename="../cli/EolRunCommand.cpp" line="306"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="334"/>
+        <location filename="../cli/EolRunCommand.cpp" line="336"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="340"/>
+        <location filename="../cli/EolRunCommand.cpp" line="342"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="342"/>
+        <location filename="../cli/EolRunCommand.cpp" line="344"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="347"/>
+        <location filename="../cli/EolRunCommand.cpp" line="349"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
     </message>
@@ -9408,87 +9408,87 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
         <source>Open recipe…</source>
         <translation>打开配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="69"/>
         <source>Per-unit values…</source>
         <translation>单台数值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="83"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
         <source>Operator:</source>
         <translation>操作员：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="93"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>扫描或输入序列号，然后按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="95"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消本台测试（Esc）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="112"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
         <source>Now</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="119"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
         <source>Unit %1: %2…</source>
         <translation>产品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="175"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
         <source>READY</source>
         <translation>就绪</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="204"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>Recipe not usable</source>
         <translation>配方不可用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="205"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9497,187 +9497,197 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="238"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="233"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="254"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版本 %2 — %n 台驱动器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;无：请打开该产品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工位 %1 · 结果：%2 · 单台数值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
         <source>loaded</source>
         <translation>已载入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="268"/>
         <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
         <translation>已测 %1 · 合格 %2 · 不合格 %3 · 直通率 %4 %</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="290"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
+        <translation>序列号 %1 未被接受：单元 %2 正在检测中。请在其判定结果显示后再扫描一次。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <source>another</source>
+        <translation>另一个单元</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
         <source>Per-unit value</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="291"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驱动器 %1：%2（%3–%4 %5）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>单元 %1：先使工作站的驱动器进入安全状态…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="451"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="471"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驱动器进入安全状态：逐一读取、停止仍在运转者、将控制权交还其输入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="304"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
         <source>NOT STARTED</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="348"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
         <source>TESTING</source>
         <translation>测试中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="354"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="374"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：结果服务器没有响应。服务器响应后会自动发送。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="386"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
         <source>NOT RECORDED</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 结果数据库恢复后，已于 %2 记录。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="438"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 条结果，尚未存入结果数据库：%1。数据库响应后会按顺序自动发送。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
         <source>it does not answer</source>
         <translation>数据库没有响应</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="465"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>单元 %1（开始于 %2）未完成：工作站在检测中停止。已记录为“中断”，请重新检测。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="332"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="409"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="422"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="181"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="429"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
 记录完成前不进行任何测试。工作站会自动重试（下次 %4）；请将此产品放在一边。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="421"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="448"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="360"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>

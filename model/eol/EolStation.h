@@ -89,6 +89,7 @@ public:
     bool isRunning() const { return m_run && m_run->isRunning(); }
     // A unit start() accepted that waits for the drives to be made safe.
     bool isStarting() const { return bool(m_pendingStart); }
+    QString startingSerial() const { return m_pendingSerial; }
     EolRun* run() const { return m_run; }
     qint64 elapsedMs() const { return m_run ? m_run->elapsedMs() : 0; }
     const Counters& counters() const { return m_counters; }

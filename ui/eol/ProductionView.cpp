@@ -4,6 +4,7 @@
 #include "eol/EolStation.h"
 #include "profile/ProfileRegistry.h"
 
+#include <QApplication>
 #include <QDateTime>
 #include <QFileDialog>
 #include <QGridLayout>
@@ -97,6 +98,13 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     auto* serialRow = new QHBoxLayout;
     serialRow->addWidget(m_serial, 1);
     serialRow->addWidget(m_cancel);
+    // A barcode scanned while a unit runs is refused where the operator looks, never dropped.
+    m_scanNote = new QLabel(this);
+    m_scanNote->setObjectName(QStringLiteral("scanNote"));
+    m_scanNote->setWordWrap(true);
+    m_scanNote->setFont(scaled(font(), 1.3, true));
+    m_scanNote->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; }"));
+    m_scanNote->hide();
 
     m_verdict = new QLabel(this);
     m_verdict->setObjectName(QStringLiteral("verdictLabel"));
@@ -125,6 +133,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     layout->addWidget(m_database);
     layout->addWidget(m_notice);
     layout->addLayout(serialRow);
+    layout->addWidget(m_scanNote);
     layout->addWidget(m_verdict);
     layout->addWidget(m_reason);
     layout->addWidget(middle, 3);
@@ -250,8 +259,7 @@ void ProductionView::refreshRecipe()
     m_database->setText(tr("Station %1 · results: %2 · per-unit values: %3")
                             .arg(m_station->station(), m_station->databaseText(),
                                  m_station->hasUnitValues() ? tr("loaded") : tr("none")));
-    m_serial->setEnabled(m_station->hasRecipe() && !m_station->isRunning() &&
-                         !m_station->isStarting() && !m_station->hasUnsavedResult());
+    m_serial->setEnabled(m_station->hasRecipe() && !m_station->hasUnsavedResult());
 }
 
 void ProductionView::refreshCounters()
@@ -276,8 +284,19 @@ void ProductionView::showVerdict(const QString& text, const QString& colour, con
 void ProductionView::startUnit()
 {
     const QString serial = m_serial->text().trimmed();
-    if (serial.isEmpty() || m_station->isRunning())
+    if (serial.isEmpty())
         return;
+    if (m_station->isRunning() || m_station->isStarting()) {
+        const QString current = m_station->isRunning() ? m_station->run()->record().serial
+                                                       : m_station->startingSerial();
+        QApplication::beep();
+        m_scanNote->setText(tr("Serial %1 was NOT taken: unit %2 is being tested. Scan it again "
+                               "once its verdict shows.")
+                                .arg(serial, current.isEmpty() ? tr("another") : current));
+        m_scanNote->show();
+        m_serial->clear();
+        return;
+    }
     // Values the recipe leaves to the operator, each within its range.
     QHash<int, QHash<QString, double>> typed;
     const Profile* profile = nullptr;
@@ -308,7 +327,7 @@ void ProductionView::startUnit()
     if (!m_station->isRunning()) { // it starts once the station's drives are safe
         showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"),
                     tr("Unit %1: making the station's drives safe first…").arg(serial));
-        m_serial->setEnabled(false);
+        m_serial->clear();
         m_cancel->setEnabled(true);
     }
 }
@@ -331,7 +350,8 @@ void ProductionView::unitStarted(const QString& serial)
     }
     showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"), tr("Unit %1").arg(serial));
     m_cancel->setEnabled(true);
-    m_serial->setEnabled(false);
+    m_scanNote->hide();
+    m_serial->clear(); // stays open: a serial scanned now is refused aloud (startUnit)
 }
 
 void ProductionView::phaseChanged(int machineNumber, int, const QString& text)

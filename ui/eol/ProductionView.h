@@ -35,6 +35,7 @@ public:
     QLabel* countersLabel() const { return m_counters; }
     QLabel* databaseLabel() const { return m_database; }
     QLabel* noticeLabel() const { return m_notice; }
+    QLabel* scanNoteLabel() const { return m_scanNote; }
     // The station makes the recipe's drives safe on the bus the window is connected to.
     void makeSafe();
     QPushButton* cancelButton() const { return m_cancel; }
@@ -74,6 +75,7 @@ private:
     QLabel* m_recipe;
     QLabel* m_database;
     QLabel* m_notice;
+    QLabel* m_scanNote;
     QLineEdit* m_operator;
     QLineEdit* m_serial;
     QPushButton* m_cancel;

@@ -106,7 +106,17 @@ TEST_F(MainWindowProductionTest, AScannedSerialRunsTheUnitToPassAndNothingEditsM
     QTest::keyClicks(view->serialField(), QStringLiteral("SN-W1"));
     QTest::keyClick(view->serialField(), Qt::Key_Return);
     EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("TESTING"));
-    EXPECT_FALSE(view->serialField()->isEnabled()) << "no second unit while one runs";
+    // Issue 25 item 6: a serial scanned while a unit runs is refused where the operator looks,
+    // not dropped by a disabled field; the unit goes on.
+    ASSERT_TRUE(view->serialField()->isEnabled());
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-W2"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    EXPECT_TRUE(view->scanNoteLabel()->isVisible());
+    EXPECT_TRUE(view->scanNoteLabel()->text().contains(QStringLiteral("SN-W2 was NOT taken")) &&
+                view->scanNoteLabel()->text().contains(QStringLiteral("SN-W1")))
+        << qPrintable(view->scanNoteLabel()->text());
+    EXPECT_TRUE(view->serialField()->text().isEmpty());
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("TESTING"));
     ASSERT_TRUE(
         waitFor([&] { return view->verdictLabel()->text() != QLatin1String("TESTING"); }, 30000));
     EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
