@@ -7,13 +7,14 @@
 #                                            must be written and not blank
 #   scripts/check-fresh-machine.sh package   build the .deb, lintian + appstream + desktop checks,
 #                                            then install it in a second fresh root, run it, remove it
-#   scripts/check-fresh-machine.sh asan      the engine's suites (transport, model, cli, sim,
+#   scripts/check-fresh-machine.sh asan      the engine's suites (transport, model, sim,
 #                                            report) built with ASan+UBSan
 #                                            (scripts/sanitize.sh address)
 #   scripts/check-fresh-machine.sh tsan      the transport and model tests with TSan
 #                                            (scripts/sanitize.sh thread)
-#   scripts/check-fresh-machine.sh sanitize  both, with the window's and the end-to-end suites
-#                                            under ASan too (OPENTOP_SANITIZE_ALL=1)
+#   scripts/check-fresh-machine.sh sanitize  both, with the command line's, the window's and the
+#                                            end-to-end suites under ASan too
+#                                            (OPENTOP_SANITIZE_ALL=1)
 #   scripts/check-fresh-machine.sh fuzz      every libFuzzer harness for OPENTOP_FUZZ_SECONDS (60)
 #                                            from its seed corpus (scripts/fuzz.sh)
 #   scripts/check-fresh-machine.sh test gui package sanitize fuzz   all of them in one root

@@ -2,10 +2,11 @@
 # Builds OpenTOP with a sanitizer in its own build directory and runs tests under it; any report
 # stops the test (halt_on_error) and fails the run.
 #   scripts/sanitize.sh address   AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer,
-#                                 the engine's suites (transport, model, cli, sim, report,
+#                                 the engine's suites (transport, model, sim, report,
 #                                 translations), in build-asan/; OPENTOP_SANITIZE_ALL=1: the
-#                                 whole suite with the window's, the end-to-end, soak and
-#                                 fault-matrix tests (their programs built with the sanitizers too)
+#                                 whole suite with the command line's, the window's, the
+#                                 end-to-end, soak and fault-matrix tests (their programs built
+#                                 with the sanitizers too)
 #   scripts/sanitize.sh thread    ThreadSanitizer: the transport, model (monitor, worker thread,
 #                                 queued calls, cancellation, shutdown) tests, in build-tsan/
 # Environment: OPENTOP_SANITIZE_BUILD_DIR overrides the build directory; OPENTOP_CTEST_ARGS adds
@@ -36,9 +37,10 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOPENTO
 # (GCC 12's maybe-uninitialized at -O1 reports std::optional values that are always set; the
 # normal -O2 build keeps the warning an error.)
 echo "== building with -fsanitize=$kind in $build"
-# CI's share (2 cores, an hour for everything): the engine's suites; the window's (test_ui) and the
-# end-to-end ones under ASan with OPENTOP_SANITIZE_ALL=1 (check-fresh-machine.sh sanitize).
-unit_suites="test_transport test_model test_cli test_sim test_report test_translations"
+# CI's share (2 cores, an hour for everything): the engine's suites; the command line's
+# (test_cli), the window's (test_ui) and the end-to-end ones under ASan with
+# OPENTOP_SANITIZE_ALL=1 (check-fresh-machine.sh sanitize).
+unit_suites="test_transport test_model test_sim test_report test_translations"
 if [ "$kind" = address ] && [ "${OPENTOP_SANITIZE_ALL:-0}" = 1 ]; then
     cmake --build "$build" -j "$jobs"
 elif [ "$kind" = address ]; then
