@@ -72,7 +72,10 @@ QList<QCommandLineOption> EolResultsCommand::options() const
          tr("The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db "
             "(default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db)."),
          tr("URL")},
-        {QStringLiteral("serial"), tr("results: only this serial number."), tr("S")},
+        {QStringLiteral("serial"),
+         tr("results: only this serial number; with * or ? a pattern that ignores case "
+            "(\"SN-10*\")."),
+         tr("S")},
         {QStringLiteral("since"),
          tr("results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today)."),
          tr("T")},

@@ -5372,247 +5372,247 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
-        <source>results: only this serial number.</source>
-        <translation>results: このシリアル番号のみ。</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="76"/>
+        <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
+        <translation>results: このシリアル番号のみ。* または ? を含むと大文字小文字を区別しないパターン（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="77"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 以降に開始したもの（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>results: started before T.</source>
         <translation>results: T より前に開始したもの。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: このレシピ（製品名）のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: pass, fail, interrupted, aborted or running.</source>
         <translation>results: pass、fail、interrupted、aborted、running のいずれか。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>results: only this station.</source>
         <translation>results: このステーションのみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>results: only the newest N units.</source>
         <translation>results: 最新の N 台のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV (RFC 4180) を標準出力または -o FILE に出力します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
         <translation>results: レシピ別・シフト別の直行率と不合格理由。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: シフトの開始時刻（ローカル時刻、既定 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="123"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="126"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; は時刻ではありません。2026-11-24、2026-11-24T06:00（ローカル時刻、または Z や +01:00 付き）、8h、2d、today、yesterday のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="133"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="251"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="136"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="148"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="153"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="156"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 が --until %2 より前ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="159"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="162"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass、fail、interrupted、aborted、running のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="169"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 製品の台数を 1 以上で指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="176"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="202"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="205"/>
         <source>no unit matches</source>
         <translation>該当する製品はありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="206"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
         <source>reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="188"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="191"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
         <source>shift</source>
         <translation>シフト</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>serials</source>
         <translation>シリアル数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>first pass</source>
         <translation>初回合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>first-pass yield</source>
         <translation>直行率</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>records</source>
         <translation>記録数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="213"/>
         <source>not finished</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
         <source>First-pass yield per recipe</source>
         <translation>レシピ別直行率</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="227"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>Per shift</source>
         <translation>シフト別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="236"/>
         <source>Failure reasons</source>
         <translation>不合格理由</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="257"/>
         <source>wrote %1</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>エラー: 予期しない引数 &quot;%1&quot;。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="269"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="272"/>
         <source>error: give --csv or --json, not both</source>
         <translation>エラー: --csv と --json は同時に指定できません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>エラー: -o は CSV ファイルを指定します。--csv も指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="278"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="281"/>
         <source>error: --shifts is for --yield</source>
         <translation>エラー: --shifts は --yield 用です</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>error: --shifts %1: %2</source>
         <translation>エラー: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="311"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
@@ -11992,7 +11992,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="118"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="142"/>
         <source>no unit record %1</source>
         <translation>製品の記録 %1 がありません</translation>
     </message>
@@ -12177,6 +12177,10 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
+        <source>any; * and ? as wildcards (SN-10*)</source>
+        <translation>すべて。* と ? をワイルドカードに使用（SN-10*）</translation>
+    </message>
+    <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>any</source>

@@ -5372,247 +5372,247 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
-        <source>results: only this serial number.</source>
-        <translation>results: 이 시리얼 번호만.</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="76"/>
+        <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
+        <translation>results: 이 일련번호만. * 또는 ?가 있으면 대소문자를 구분하지 않는 패턴(&quot;SN-10*&quot;).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="75"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="77"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 또는 그 이후에 시작한 것 (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="79"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>results: started before T.</source>
         <translation>results: T 이전에 시작한 것.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: 이 레시피(제품 이름)만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: pass, fail, interrupted, aborted or running.</source>
         <translation>results: pass, fail, interrupted, aborted 또는 running.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>results: only this station.</source>
         <translation>results: 이 스테이션만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>results: only the newest N units.</source>
         <translation>results: 최신 제품 N대만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV(RFC 4180)를 표준 출력 또는 -o FILE로.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
         <translation>results: 레시피별·근무조별 직행률과 불합격 원인.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: 근무조 시작 시각(현지 시간, 기본값 06:00,14:00,22:00).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="123"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="126"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot;은(는) 시각이 아닙니다. 2026-11-24, 2026-11-24T06:00 (현지 시간, 또는 Z나 +01:00 포함), 8h, 2d, today 또는 yesterday를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="133"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="251"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="136"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="148"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="153"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="156"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1이(가) --until %2보다 이전이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="159"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="162"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass, fail, interrupted, aborted 또는 running을 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="169"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 1 이상의 제품 수를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="176"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="202"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="205"/>
         <source>no unit matches</source>
         <translation>일치하는 제품 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="206"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
         <source>verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
         <source>time</source>
         <translation>시간</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="180"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
         <source>reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="188"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="191"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
         <source>shift</source>
         <translation>근무조</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>serials</source>
         <translation>시리얼 수</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>first pass</source>
         <translation>1회 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>first-pass yield</source>
         <translation>직행률</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
         <source>records</source>
         <translation>기록 수</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="213"/>
         <source>not finished</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
         <source>First-pass yield per recipe</source>
         <translation>레시피별 직행률</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="227"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>Per shift</source>
         <translation>근무조별</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="236"/>
         <source>Failure reasons</source>
         <translation>불합격 원인</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="257"/>
         <source>wrote %1</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>오류: 예상치 못한 인수 &quot;%1&quot;; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="269"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="272"/>
         <source>error: give --csv or --json, not both</source>
         <translation>오류: --csv와 --json 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>오류: -o는 CSV 파일을 지정합니다: --csv도 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="278"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="281"/>
         <source>error: --shifts is for --yield</source>
         <translation>오류: --shifts는 --yield와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>error: --shifts %1: %2</source>
         <translation>오류: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="311"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
@@ -11992,7 +11992,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="118"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="142"/>
         <source>no unit record %1</source>
         <translation>제품 기록 %1 없음</translation>
     </message>
@@ -12177,6 +12177,10 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
+        <source>any; * and ? as wildcards (SN-10*)</source>
+        <translation>전체. * 와 ? 를 와일드카드로 사용(SN-10*)</translation>
+    </message>
+    <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
         <source>any</source>

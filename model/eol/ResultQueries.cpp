@@ -55,6 +55,27 @@ ResultQueries::ResultQueries(ResultDatabase& database)
 {
 }
 
+bool ResultFilter::serialIsPattern() const
+{
+    return serial.contains(QLatin1Char('*')) || serial.contains(QLatin1Char('?'));
+}
+
+QString ResultFilter::serialLike() const
+{
+    QString like;
+    for (const QChar c : serial.toLower()) {
+        if (c == QLatin1Char('\\') || c == QLatin1Char('%') || c == QLatin1Char('_'))
+            like += QString(QLatin1Char('\\')) + c;
+        else if (c == QLatin1Char('*'))
+            like += QLatin1Char('%');
+        else if (c == QLatin1Char('?'))
+            like += QLatin1Char('_');
+        else
+            like += c;
+    }
+    return like;
+}
+
 std::optional<QVector<UnitRecord>> ResultQueries::find(const ResultFilter& f, QString* error) const
 {
     QStringList where;
@@ -63,7 +84,10 @@ std::optional<QVector<UnitRecord>> ResultQueries::find(const ResultFilter& f, QS
         where.append(QLatin1String(condition));
         values.append(value);
     };
-    if (!f.serial.isEmpty())
+    // LOWER() on both sides: SQLite's LIKE ignores ASCII case and PostgreSQL's does not.
+    if (f.serialIsPattern())
+        add("LOWER(serial) LIKE ? ESCAPE '\\'", f.serialLike());
+    else if (!f.serial.isEmpty())
         add("serial = ?", f.serial);
     if (f.from.isValid())
         add("started_utc >= ?", UnitRecordJson::timeText(f.from));
@@ -185,7 +209,9 @@ std::optional<QSet<QPair<QString, QString>>> ResultQueries::testedBefore(const R
     };
     if (f.to.isValid())
         add(" AND r.started_utc < ?", UnitRecordJson::timeText(f.to));
-    if (!f.serial.isEmpty())
+    if (f.serialIsPattern())
+        add(" AND LOWER(r.serial) LIKE ? ESCAPE '\\'", f.serialLike());
+    else if (!f.serial.isEmpty())
         add(" AND r.serial = ?", f.serial);
     if (!f.recipe.isEmpty())
         add(" AND r.recipe_name = ?", f.recipe);

@@ -14,6 +14,8 @@ class ResultDatabase;
 // What to look for in the results database; empty parts match everything.
 struct ResultFilter
 {
+    // A serial number; with a * (any characters) or ? (one character) in it, a pattern that
+    // ignores case ("sn-10*"): what an operator types into a search field (serialsLike()).
     QString serial;
     QDateTime from;                   // started at or after (UTC)
     QDateTime to;                     // started before
@@ -21,6 +23,10 @@ struct ResultFilter
     std::optional<UnitStatus> status; // Pass matches 'pass' only: running/interrupted never do
     QString station;
     int limit = 0; // the newest `limit` units; 0: all
+
+    bool serialIsPattern() const;
+    // The SQL LIKE form of the pattern, in lower case, with \ as its escape character.
+    QString serialLike() const;
 };
 
 // Reads unit records back (docs/eol-results.md).

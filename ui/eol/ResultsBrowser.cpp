@@ -127,7 +127,7 @@ QWidget* ResultsBrowser::makeFilters()
     urlRow->addWidget(browse);
 
     m_serial = new QLineEdit(box);
-    m_serial->setPlaceholderText(tr("any"));
+    m_serial->setPlaceholderText(tr("any; * and ? as wildcards (SN-10*)"));
     m_recipe = new QLineEdit(box);
     m_recipe->setPlaceholderText(tr("any"));
     m_station = new QLineEdit(box);

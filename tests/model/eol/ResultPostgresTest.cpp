@@ -80,6 +80,16 @@ TEST_F(ResultPostgresTest, SameRecordReadsBackIdenticallyFromSqliteAndPostgres)
                   UnitRecordJson::toBytes(*fromLite).toStdString());
         EXPECT_EQ(*fromPg, r);
     }
+    // A serial pattern finds the same units on both engines, whatever their LIKE does with case.
+    ResultFilter pattern;
+    pattern.serial = QStringLiteral("sn-b*");
+    const auto pgFound = ResultQueries(*pg).find(pattern, &error);
+    const auto liteFound = ResultQueries(*lite).find(pattern, &error);
+    ASSERT_TRUE(pgFound && liteFound) << error.toStdString();
+    EXPECT_EQ(pgFound->size(), 2);
+    EXPECT_EQ(liteFound->size(), 2);
+    pattern.serial = QStringLiteral("SN_BOTH*"); // "_" is itself, not any one character
+    EXPECT_EQ(ResultQueries(*pg).find(pattern, &error)->size(), 0) << error.toStdString();
 }
 
 TEST_F(ResultPostgresTest, MigratesRefusesNewerAndMarksInterrupted)

@@ -97,6 +97,17 @@ TEST_F(ResultQueriesTest, FiltersBySerialTimeRecipeVerdictAndStation)
     f.station = QStringLiteral("B");
     f.recipe = QStringLiteral("pump");
     EXPECT_EQ(serials(f), list({"S2/pass"}));
+    // Issue 25 item 6: what an operator types into a search field.
+    f = {};
+    f.serial = QStringLiteral("s*");
+    EXPECT_EQ(serials(f),
+              list({"S1/pass", "S2/fail", "S2/pass", "S3/pass", "S4/running", "S5/aborted"}));
+    f.serial = QStringLiteral("?2");
+    EXPECT_EQ(serials(f), list({"S2/fail", "S2/pass"}));
+    f.serial = QStringLiteral("S_*"); // an underscore is itself, not any character
+    EXPECT_EQ(serials(f), QStringList());
+    f.serial = QStringLiteral("s2"); // no wildcard: exact, as a certificate needs
+    EXPECT_EQ(serials(f), QStringList());
     f = {};
     f.limit = 2; // the newest two, oldest first
     EXPECT_EQ(serials(f), list({"S4/running", "S5/aborted"}));
