@@ -84,6 +84,7 @@ QString CliApp::helpText(const QString& program) const
                "group is checked before a write or command\n\n"
                "Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file\n"
                "(nothing written), 4 verification mismatch or a drive that did not stop,\n"
+               "5 eol run FAIL, 6 eol run station error (no verdict on the unit),\n"
                "130 interrupted by Ctrl-C, SIGTERM or SIGHUP (what was done is reported).\n\n"
                "\"%1 help COMMAND\" shows a command's options.\n")
                 .arg(program);

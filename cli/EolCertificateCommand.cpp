@@ -133,7 +133,12 @@ int EolCertificateCommand::run(CliContext& context, const QStringList& args)
         return ExitOk;
     }
     const QString file = path.isEmpty() ? defaultFile(record->serial) : path;
-    if (!CertificatePdf::save(*record, file, &error)) {
+    const std::optional<QVector<UnitRecord>> earlier = queries.earlierOf(*record, &error);
+    if (!earlier) {
+        context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+        return ExitCommunication;
+    }
+    if (!CertificatePdf::save(*record, file, &error, *earlier)) {
         context.err() << tr("error: %1").arg(error) << Qt::endl;
         return ExitUsage;
     }

@@ -36,23 +36,31 @@ QString localTime(const QDateTime& time)
                           : QString();
 }
 
-QString percent(double share)
-{
-    return QString::number(share * 100, 'f', 1) + QStringLiteral(" %");
-}
-
 QJsonObject yieldJson(const YieldRow& r)
 {
-    QJsonObject reasons;
-    for (auto it = r.failureReasons.cbegin(); it != r.failureReasons.cend(); ++it)
-        reasons.insert(it.key(), it.value());
+    auto counts = [](const QMap<QString, int>& map) {
+        QJsonObject o;
+        for (auto it = map.cbegin(); it != map.cend(); ++it)
+            o.insert(it.key(), it.value());
+        return o;
+    };
     QJsonObject o{{QStringLiteral("recipe"), r.recipe},
+                  {QStringLiteral("revision"), r.revision},
+                  {QStringLiteral("checksum"), r.checksum},
                   {QStringLiteral("serials"), r.serials},
                   {QStringLiteral("firstPass"), r.firstPass},
                   {QStringLiteral("firstPassYield"), r.firstPassYield()},
+                  {QStringLiteral("secondPass"), r.secondPass},
+                  {QStringLiteral("secondPassYield"), r.secondPassYield()},
+                  {QStringLiteral("lastPass"), r.lastPass},
+                  {QStringLiteral("lastPassYield"), r.lastPassYield()},
                   {QStringLiteral("records"), r.records},
+                  {QStringLiteral("passed"), r.passed},
+                  {QStringLiteral("failed"), r.failed},
+                  {QStringLiteral("stationErrors"), r.stationErrors},
                   {QStringLiteral("notFinished"), r.running},
-                  {QStringLiteral("failureReasons"), reasons}};
+                  {QStringLiteral("failureReasons"), counts(r.failureReasons)},
+                  {QStringLiteral("stationReasons"), counts(r.stationReasons)}};
     if (!r.shift.isEmpty())
         o.insert(QStringLiteral("shift"), r.shift);
     return o;
@@ -81,14 +89,20 @@ QList<QCommandLineOption> EolResultsCommand::options() const
          tr("T")},
         {QStringLiteral("until"), tr("results: started before T."), tr("T")},
         {QStringLiteral("recipe"), tr("results: only this recipe (product name)."), tr("NAME")},
-        {QStringLiteral("verdict"), tr("results: pass, fail, interrupted, aborted or running."),
+        {QStringLiteral("checksum"),
+         tr("results: only this version of a recipe (its checksum, as eol recipe check prints "
+            "it)."),
+         tr("SUM")},
+        {QStringLiteral("verdict"),
+         tr("results: pass, fail, error (station error), interrupted, aborted or running."),
          tr("V")},
         {QStringLiteral("station"), tr("results: only this station."), tr("NAME")},
         {QStringLiteral("limit"), tr("results: only the newest N units."), tr("N")},
         EolSupport::outputOption(),
         {QStringLiteral("csv"), tr("results: CSV (RFC 4180) on standard output or to -o FILE.")},
         {QStringLiteral("yield"),
-         tr("results: first-pass yield and failure reasons per recipe and per shift.")},
+         tr("results: first-, second- and last-pass yield and failure reasons per recipe "
+            "version and per shift; station errors and aborts are kept out of yield.")},
         {QStringLiteral("shifts"),
          tr("results --yield: the shifts' start times in local time (default 06:00,14:00,22:00)."),
          tr("LIST")},
@@ -139,6 +153,7 @@ std::optional<ResultFilter> EolResultsCommand::filter(CliContext& context)
     ResultFilter f;
     f.serial = parser.value(QStringLiteral("serial")).trimmed();
     f.recipe = parser.value(QStringLiteral("recipe")).trimmed();
+    f.checksum = parser.value(QStringLiteral("checksum")).trimmed();
     f.station = parser.value(QStringLiteral("station")).trimmed();
     const QDateTime now = QDateTime::currentDateTime();
     for (const char* name : {"since", "until"}) {
@@ -159,7 +174,8 @@ std::optional<ResultFilter> EolResultsCommand::filter(CliContext& context)
         const QString text = parser.value(QStringLiteral("verdict")).trimmed().toLower();
         f.status = unitStatusFromName(text);
         if (!f.status)
-            return usage(tr("--verdict \"%1\": give pass, fail, interrupted, aborted or running")
+            return usage(tr("--verdict \"%1\": give pass, fail, error, interrupted, aborted or "
+                            "running")
                              .arg(parser.value(QStringLiteral("verdict"))));
     }
     if (parser.isSet(QStringLiteral("limit"))) {
@@ -209,15 +225,20 @@ void EolResultsCommand::printYield(CliContext& context, const QVector<YieldRow>&
         QStringList headers{tr("recipe")};
         if (shifts)
             headers << tr("shift");
-        headers << tr("serials") << tr("first pass") << tr("first-pass yield") << tr("records")
-                << tr("not finished");
+        headers << tr("serials") << tr("first pass") << tr("second pass") << tr("last pass")
+                << tr("passed") << tr("failed") << tr("station errors") << tr("not finished");
         TextTable t(headers);
+        auto share = [](int n, double yield) {
+            return QStringLiteral("%1 (%2)").arg(n).arg(YieldReport::percentText(yield));
+        };
         for (const YieldRow& r : rows) {
-            QStringList cells{r.recipe};
+            QStringList cells{r.title()};
             if (shifts)
                 cells << r.shift;
-            cells << QString::number(r.serials) << QString::number(r.firstPass)
-                  << percent(r.firstPassYield()) << QString::number(r.records)
+            cells << QString::number(r.serials) << share(r.firstPass, r.firstPassYield())
+                  << share(r.secondPass, r.secondPassYield())
+                  << share(r.lastPass, r.lastPassYield()) << QString::number(r.passed)
+                  << QString::number(r.failed) << QString::number(r.stationErrors)
                   << QString::number(r.running);
             t.addRow(cells);
         }
@@ -225,19 +246,31 @@ void EolResultsCommand::printYield(CliContext& context, const QVector<YieldRow>&
             t.setRightAligned(c);
         t.print(out);
     };
-    out << tr("First-pass yield per recipe") << '\n';
+    out << tr("Yield per recipe version (station errors and aborts are not counted)") << '\n';
     table(perRecipe, false);
+    // Two versions of one recipe name are told apart by their checksums.
+    QHash<QString, int> versions;
+    for (const YieldRow& r : perRecipe)
+        ++versions[r.title()];
+    for (const YieldRow& r : perRecipe)
+        if (versions.value(r.title()) > 1)
+            out << "  " << tr("%1: checksum %2").arg(r.title(), r.checksum) << '\n';
     out << '\n' << tr("Per shift") << '\n';
     table(perShift, true);
-    bool any = false;
-    for (const YieldRow& r : perRecipe) {
-        for (auto it = r.failureReasons.cbegin(); it != r.failureReasons.cend(); ++it) {
-            if (!any)
-                out << '\n' << tr("Failure reasons") << '\n';
-            any = true;
-            out << QStringLiteral("  %1  %2: %3\n").arg(it.value(), 4).arg(r.recipe, it.key());
+    auto reasons = [&](const QString& title, QMap<QString, int> YieldRow::*which) {
+        bool any = false;
+        for (const YieldRow& r : perRecipe) {
+            const QMap<QString, int>& map = r.*which;
+            for (auto it = map.cbegin(); it != map.cend(); ++it) {
+                if (!any)
+                    out << '\n' << title << '\n';
+                any = true;
+                out << QStringLiteral("  %1  %2: %3\n").arg(it.value(), 4).arg(r.title(), it.key());
+            }
         }
-    }
+    };
+    reasons(tr("Failure reasons"), &YieldRow::failureReasons);
+    reasons(tr("Station errors (not counted in yield)"), &YieldRow::stationReasons);
     out.flush();
 }
 
@@ -301,19 +334,15 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
     const std::unique_ptr<ResultDatabase> db = EolSupport::openDatabase(context, &code);
     if (!db)
         return code;
-    ResultQueries queries(*db);
     QString error;
-    const std::optional<QVector<UnitRecord>> units = queries.find(*f, &error);
-    std::optional<QSet<QPair<QString, QString>>> earlier;
-    if (units && yield)
-        earlier = queries.testedBefore(*f, &error);
-    if (!units || (yield && !earlier)) {
-        context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
-        return ExitCommunication;
-    }
     if (yield) {
-        const QVector<YieldRow> perRecipe = YieldReport::perRecipe(*units, *earlier);
-        const QVector<YieldRow> perShift = YieldReport::perShift(*units, plan, *earlier);
+        const std::optional<YieldReport::Tables> tables = YieldReport::query(*db, *f, plan, &error);
+        if (!tables) {
+            context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+            return ExitCommunication;
+        }
+        const QVector<YieldRow>& perRecipe = tables->perRecipe;
+        const QVector<YieldRow>& perShift = tables->perShift;
         if (csv)
             return output(context, ResultCsv::yield(perRecipe + perShift));
         if (context.json()) {
@@ -332,6 +361,11 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
         }
         printYield(context, perRecipe, perShift);
         return ExitOk;
+    }
+    const std::optional<QVector<UnitRecord>> units = ResultQueries(*db).find(*f, &error);
+    if (!units) {
+        context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+        return ExitCommunication;
     }
     if (csv)
         return output(context, ResultCsv::units(*units));

@@ -8,6 +8,7 @@
 #include "eol/RecipeChecker.h"
 #include "eol/RecipeFile.h"
 #include "eol/ResultWriter.h"
+#include "eol/RetestPolicy.h"
 #include "eol/StationSafeState.h"
 #include "eol/UnitValuesCsv.h"
 #include "profile/ProfileRegistry.h"
@@ -37,6 +38,7 @@ const QString kStation = QStringLiteral("station");
 const QString kDb = QStringLiteral("db");
 const QString kUnits = QStringLiteral("units");
 const QString kValue = QStringLiteral("value");
+const QString kRetest = QStringLiteral("retest");
 
 QString phaseKey(EolDriveRun::Phase phase)
 {
@@ -78,7 +80,7 @@ void jsonLine(CliContext& context, QJsonObject object)
 QString EolRunCommand::synopsis() const
 {
     return QStringLiteral("run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
-                          "[--units CSV] [--value ID:NAME=VALUE]...");
+                          "[--units CSV] [--value ID:NAME=VALUE]... [--retest]");
 }
 
 QString EolRunCommand::summary() const
@@ -96,6 +98,9 @@ QList<QCommandLineOption> EolRunCommand::options() const
         {kUnits, tr("CSV file with the per-unit values, by serial number."), tr("CSV")},
         {kValue, tr("A per-unit value typed by the operator, e.g. 1:spno3.speed=1500."),
          tr("ID:NAME=VALUE")},
+        {kRetest,
+         tr("A technician allows a retest the recipe's rules hold back (a serial that passed "
+            "already, or its attempts used up).")},
     };
 }
 
@@ -200,6 +205,30 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
                   "database yet")
                    .arg(opened.waiting)
             << Qt::endl;
+
+    // The recipe's retest rules, on the serial's recorded verdicts, before anything is sent.
+    RetestPolicy::Decision decision;
+    {
+        QEventLoop loop;
+        RetestPolicy::check(&writer, recipe->retest, serial, checksum, &loop,
+                            [&](const RetestPolicy::Decision& d) {
+                                decision = d;
+                                loop.quit();
+                            });
+        loop.exec();
+    }
+    if (decision.kind == RetestPolicy::Decision::Kind::Refused ||
+        (decision.kind == RetestPolicy::Decision::Kind::NeedsTechnician &&
+         !parser.isSet(kRetest))) {
+        err << tr("error: %1; nothing was sent").arg(decision.reason) << Qt::endl;
+        if (decision.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
+            err << tr("a technician allows it with --retest") << Qt::endl;
+        return ExitInvalid;
+    }
+    if (decision.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
+        err << tr("note: %1; tested again as --retest allows").arg(decision.reason) << Qt::endl;
+    else if (!decision.reason.isEmpty())
+        err << tr("note: %1").arg(decision.reason) << Qt::endl;
 
     if (!context.connectBus())
         return context.usageError() ? ExitUsage : ExitCommunication;
@@ -323,7 +352,8 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
                       {QStringLiteral("id"), record.id},
                       {QStringLiteral("seconds"), eol.elapsedMs() / 1000.0},
                       {QStringLiteral("recorded"), eol.storeError().isEmpty()},
-                      {QStringLiteral("spooled"), eol.spooled()}};
+                      {QStringLiteral("spooled"), eol.spooled()},
+                      {QStringLiteral("attempt"), record.attempt}};
         if (!record.failureReason.isEmpty())
             o.insert(QStringLiteral("reason"), record.failureReason);
         if (!eol.unconfirmedStops().isEmpty())
@@ -331,9 +361,12 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
                      QJsonValue::fromVariant(eol.unconfirmedStops()));
         jsonLine(context, o);
     } else {
-        out << QStringLiteral("%1  %2  %3 %4  %5 s\n")
+        out << QStringLiteral("%1  %2  %3 %4  %5 s%6\n")
                    .arg(record.serial, verdict, recipe->product,
-                        tr("rev. %1").arg(recipe->revision), seconds());
+                        tr("rev. %1").arg(recipe->revision), seconds(),
+                        record.attempt > 1
+                            ? QStringLiteral("  ") + tr("attempt %1").arg(record.attempt)
+                            : QString());
         if (!record.failureReason.isEmpty())
             out << record.failureReason << '\n';
         out.flush();
@@ -357,6 +390,8 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
         return ExitOk;
     case UnitStatus::Fail:
         return ExitFail;
+    case UnitStatus::Error:
+        return lost ? ExitCommunication : ExitStation;
     default:
         break;
     }

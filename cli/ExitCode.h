@@ -11,6 +11,9 @@ enum ExitCode : int
     ExitInvalid = 3,       // a value or file refused by validation; nothing was written
     ExitMismatch = 4,      // a write read back differently, or a drive did not stop
     ExitFail = 5,          // eol run: the unit failed its end-of-line test (it is recorded)
+    // eol run: the station could not test the unit (no answer, a motor already turning, an
+    // alarm latched before the test); recorded as a station error, no verdict on the unit.
+    ExitStation = 6,
     ExitInterrupted = 130, // Ctrl-C; what was done is reported
 };
 

@@ -13,7 +13,7 @@
 
 namespace opentop {
 
-QByteArray CertificatePdf::pdf(const UnitRecord& record)
+QByteArray CertificatePdf::pdf(const UnitRecord& record, const QVector<UnitRecord>& earlier)
 {
     QByteArray bytes;
     QBuffer buffer(&bytes);
@@ -25,13 +25,14 @@ QByteArray CertificatePdf::pdf(const UnitRecord& record)
         writer.setResolution(300);
         writer.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait,
                                          QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter));
+        // The same page as bodySize() computes without a writer.
         QTextDocument document;
-        document.setHtml(CertificateHtml::html(record));
+        document.setHtml(CertificateHtml::html(record, earlier));
         // Lay the text out in points on a page of the writer's size less a footer line, then
         // scale to the writer's dots.
         const QRectF page = writer.pageLayout().paintRect(QPageLayout::Point);
-        constexpr double footer = 14;
-        const QSizeF body(page.width(), page.height() - footer);
+        const QSizeF body = bodySize();
+        const double footer = page.height() - body.height();
         document.setPageSize(body);
         QPainter painter(&writer);
         const double scale = writer.resolution() / 72.0;
@@ -60,9 +61,19 @@ QByteArray CertificatePdf::pdf(const UnitRecord& record)
     return bytes;
 }
 
-bool CertificatePdf::save(const UnitRecord& record, const QString& path, QString* error)
+QSizeF CertificatePdf::bodySize()
 {
-    return OutputFile::write(path, pdf(record), error);
+    const QRectF page = QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait,
+                                    QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter)
+                            .paintRect(QPageLayout::Point);
+    constexpr double footer = 14;
+    return QSizeF(page.width(), page.height() - footer);
+}
+
+bool CertificatePdf::save(const UnitRecord& record, const QString& path, QString* error,
+                          const QVector<UnitRecord>& earlier)
+{
+    return OutputFile::write(path, pdf(record, earlier), error);
 }
 
 } // namespace opentop

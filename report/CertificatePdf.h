@@ -3,6 +3,7 @@
 #include "eol/UnitRecord.h"
 
 #include <QCoreApplication>
+#include <QSizeF>
 
 namespace opentop {
 
@@ -12,8 +13,13 @@ class CertificatePdf
 {
     Q_DECLARE_TR_FUNCTIONS(opentop::CertificatePdf)
 public:
-    static QByteArray pdf(const UnitRecord& record);
-    static bool save(const UnitRecord& record, const QString& path, QString* error);
+    // `earlier`: the serial's records before this one (CertificateHtml lists them).
+    static QByteArray pdf(const UnitRecord& record, const QVector<UnitRecord>& earlier = {});
+    static bool save(const UnitRecord& record, const QString& path, QString* error,
+                     const QVector<UnitRecord>& earlier = {});
+    // The text's page in points (A4 less margins and the footer line): where QTextDocument
+    // breaks the certificate's pages.
+    static QSizeF bodySize();
 };
 
 } // namespace opentop

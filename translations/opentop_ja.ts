@@ -2391,7 +2391,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
@@ -2402,188 +2402,239 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <source>STATION ERROR</source>
+        <translation>ステーションエラー</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>INTERRUPTED</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
         <source>NOT FINISHED</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="65"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="67"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="72"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="74"/>
         <source>End-of-line test certificate</source>
         <translation>出荷検査成績書</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="75"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
         <source>Serial number</source>
         <translation>シリアル番号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>%1, revision %2</source>
         <translation>%1、リビジョン %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
         <source>Recipe checksum</source>
         <translation>レシピのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <source>Attempt</source>
+        <translation>試験回数</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <source>%1 (tests of this serial under this recipe)</source>
+        <translation>%1 回目（このレシピでのこのシリアルの試験）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <source>not counted (recorded before attempts were)</source>
+        <translation>カウントなし（試験回数の記録開始前の記録）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>Ended</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>Record</source>
         <translation>記録</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="96"/>
         <source>First failure:</source>
         <translation>最初の不合格:</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <source>This serial failed %n earlier test(s); they are listed below.</source>
+        <translation>
+            <numerusform>このシリアルは過去の試験で %n 回不合格になっています。以下に一覧を示します。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Drives</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Variant</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Read back</source>
         <translation>読み戻し</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="101"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
         <source>Verified</source>
         <translation>照合</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>already set</source>
         <translation>設定済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>NO</source>
         <translation>いいえ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="108"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Measurements</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Step</source>
         <translation>ステップ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Quantity</source>
         <translation>測定項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Limits</source>
         <translation>規格値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <source>Earlier tests of this serial</source>
+        <translation>このシリアルの過去の試験</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <source>Reason</source>
+        <translation>理由</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="139"/>
+        <source>%1 rev. %2</source>
+        <translation>%1 rev. %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後のバス通信</translation>
     </message>
@@ -2596,7 +2647,7 @@ Drives: %5</source>
         <translation>出荷検査成績書 %1</translation>
     </message>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="53"/>
+        <location filename="../report/CertificatePdf.cpp" line="54"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · %3 / %4 ページ</translation>
     </message>
@@ -2635,6 +2686,7 @@ group is checked before a write or command
 
 Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 (nothing written), 4 verification mismatch or a drive that did not stop,
+5 eol run FAIL, 6 eol run station error (no verdict on the unit),
 130 interrupted by Ctrl-C, SIGTERM or SIGHUP (what was done is reported).
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
@@ -2654,24 +2706,25 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 終了コード: 0 成功、1 通信失敗、2 使い方の誤り、3 不正な値またはファイル
 （何も書き込まない）、4 照合不一致または停止しなかったドライバあり、
+5 eol run 不合格、6 eol run ステーションエラー（製品の判定なし）、
 130 Ctrl-C、SIGTERM、SIGHUP による中断（実行済みの内容を報告）。
 
 &quot;%1 help COMMAND&quot; でコマンドのオプションを表示します。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="167"/>
-        <location filename="../cli/CliApp.cpp" line="221"/>
+        <location filename="../cli/CliApp.cpp" line="168"/>
+        <location filename="../cli/CliApp.cpp" line="222"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot; を実行してください。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="187"/>
+        <location filename="../cli/CliApp.cpp" line="188"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 不明なコマンド &quot;%2&quot;。コマンド: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="195"/>
+        <location filename="../cli/CliApp.cpp" line="196"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2680,12 +2733,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="209"/>
+        <location filename="../cli/CliApp.cpp" line="210"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3 はこのコマンドのオプションではありません。&quot;%1 help %2&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="220"/>
+        <location filename="../cli/CliApp.cpp" line="221"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4715,7 +4768,7 @@ Configuration changes written but not stored are discarded.</source>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
         <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="137"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="142"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -4736,6 +4789,7 @@ Configuration changes written but not stored are discarded.</source>
     </message>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
@@ -4750,7 +4804,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="140"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="145"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>%1 を書き込みました: シリアル番号 %2、%3、記録日時 %4</translation>
     </message>
@@ -4807,122 +4861,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="73"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
         <source>no drive answers at machine number %1</source>
         <translation>局番 %1 で応答するドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="74"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="77"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>局番 %1 のドライバを識別できません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="91"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 ドライバですが、レシピには %2 ドライバが必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>ドライバが機種を通知しません。レシピで許可されているのは %1 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="96"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>機種 %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="102"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>ファームウェア %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="116"/>
         <source>no profile for the family %1</source>
         <translation>ファミリ %1 のプロファイルがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
-        <source>cannot read whether the motor runs: %1</source>
-        <translation>モータが運転中かどうかを読み出せません: %1</translation>
+        <location filename="../model/eol/EolDriveRun.cpp" line="162"/>
+        <source>cannot read whether the motor runs or an alarm is active: %1</source>
+        <translation>モータが運転中か、アラームが発生しているかを読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="149"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="163"/>
+        <source>no answer</source>
+        <translation>応答なし</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="170"/>
         <source>its motor was running before the test</source>
         <translation>試験前からモータが運転していました</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="150"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="171"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>試験前にモータがすでに運転しています（中断された実行の残り？）。何も書き込んでいません: 先に停止してください（全停止、またはドライバ側で）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="160"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="178"/>
+        <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
+        <translation>試験前からアラームが発生しています（前の製品の残り？）。何も書き込んでいません: アラームをリセットして再試験してください</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="188"/>
         <source>writing the settings</source>
         <translation>設定を書込み中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="230"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="237"/>
         <source>writing the settings: %1</source>
         <translation>設定の書込み: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="217"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="245"/>
         <source>reading every setting back</source>
         <translation>全設定を読み戻し中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="232"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="260"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 を読み戻せません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 が値を保持しません: %2 に設定、読出し値 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
         <source>verifying the settings: %1</source>
         <translation>設定の照合: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="256"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="284"/>
         <source>arming the communication-loss stop</source>
         <translation>通信途絶停止を有効化中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="261"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="289"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み取れません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="274"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="302"/>
         <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
         <translation>通信途絶停止を有効にできません（%1 = %2 s）: %3。これなしではモーターを起動しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="306"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="334"/>
         <source>testing</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="310"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="338"/>
         <source>step %1 of %2: %3</source>
         <translation>ステップ %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="366"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="401"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -5357,262 +5421,298 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="65"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>結果データベースの製品と直行率を一覧表示、または CSV でエクスポートします</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="72"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>結果データベース: SQLite ファイル、sqlite:PATH、または postgresql://user@host/db（既定: OPENTOP_EOL_DB、なければ ~/.local/share/opentop/results.db）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="76"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results: このシリアル番号のみ。* または ? を含むと大文字小文字を区別しないパターン（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 以降に開始したもの（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: started before T.</source>
         <translation>results: T より前に開始したもの。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: このレシピ（製品名）のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
-        <source>results: pass, fail, interrupted, aborted or running.</source>
-        <translation>results: pass、fail、interrupted、aborted、running のいずれか。</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only this station.</source>
         <translation>results: このステーションのみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>results: only the newest N units.</source>
         <translation>results: 最新の N 台のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV (RFC 4180) を標準出力または -o FILE に出力します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
-        <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
-        <translation>results: レシピ別・シフト別の直行率と不合格理由。</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: シフトの開始時刻（ローカル時刻、既定 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="126"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; は時刻ではありません。2026-11-24、2026-11-24T06:00（ローカル時刻、または Z や +01:00 付き）、8h、2d、today、yesterday のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="136"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="156"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 が --until %2 より前ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="162"/>
-        <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
-        <translation>--verdict &quot;%1&quot;: pass、fail、interrupted、aborted、running のいずれかを指定してください</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
+        <translation>results: このバージョンのレシピのみ（eol recipe check が表示するチェックサムで指定）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="169"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
+        <source>SUM</source>
+        <translation>SUM</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
+        <translation>results: pass、fail、error（ステーションエラー）、interrupted、aborted、running のいずれか。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
+        <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
+        <translation>results: レシピバージョン別・シフト別の直行率、2 回目までの合格率、最終合格率と不合格理由。ステーションエラーと中止は歩留まりに含めません。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
+        <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
+        <translation>--verdict &quot;%1&quot;: pass、fail、error、interrupted、aborted、running のいずれかを指定してください</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 製品の台数を 1 以上で指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="205"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="222"/>
         <source>no unit matches</source>
         <translation>該当する製品はありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
         <source>recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="191"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
         <source>shift</source>
         <translation>シフト</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>serials</source>
         <translation>シリアル数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>first pass</source>
         <translation>初回合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
-        <source>first-pass yield</source>
-        <translation>直行率</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <source>second pass</source>
+        <translation>2 回目までに合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
-        <source>records</source>
-        <translation>記録数</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <source>last pass</source>
+        <translation>最終合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="213"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>passed</source>
+        <translation>合格</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>failed</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>station errors</source>
+        <translation>ステーションエラー</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="250"/>
+        <source>Yield per recipe version (station errors and aborts are not counted)</source>
+        <translation>レシピバージョン別の歩留まり（ステーションエラーと中止は含めない）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="258"/>
+        <source>%1: checksum %2</source>
+        <translation>%1: チェックサム %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>not finished</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
-        <source>First-pass yield per recipe</source>
-        <translation>レシピ別直行率</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="259"/>
         <source>Per shift</source>
         <translation>シフト別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="236"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
         <source>Failure reasons</source>
         <translation>不合格理由</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="257"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="274"/>
+        <source>Station errors (not counted in yield)</source>
+        <translation>ステーションエラー（歩留まりに含めない）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>wrote %1</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>エラー: 予期しない引数 &quot;%1&quot;。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="272"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="306"/>
         <source>error: give --csv or --json, not both</source>
         <translation>エラー: --csv と --json は同時に指定できません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="310"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>エラー: -o は CSV ファイルを指定します。--csv も指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="281"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
         <source>error: --shifts is for --yield</source>
         <translation>エラー: --shifts は --yield 用です</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="325"/>
         <source>error: --shifts %1: %2</source>
         <translation>エラー: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="311"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="343"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="369"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
@@ -5630,48 +5730,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>結果データベースに製品を記録できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="92"/>
+        <location filename="../model/eol/EolRun.cpp" line="94"/>
         <source>the recipe has no drives</source>
         <translation>レシピにドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="105"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>the recipe is not valid: %1</source>
         <translation>レシピが無効です: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="110"/>
+        <location filename="../model/eol/EolRun.cpp" line="112"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: この製品の %2 の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="128"/>
+        <location filename="../model/eol/EolRun.cpp" line="130"/>
         <source>cancelled by the operator</source>
         <translation>作業者によるキャンセル</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="137"/>
+        <location filename="../model/eol/EolRun.cpp" line="141"/>
         <source>the connection was lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="143"/>
-        <location filename="../model/eol/EolRun.cpp" line="150"/>
+        <location filename="../model/eol/EolRun.cpp" line="149"/>
+        <location filename="../model/eol/EolRun.cpp" line="157"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="147"/>
+        <location filename="../model/eol/EolRun.cpp" line="154"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="185"/>
+        <location filename="../model/eol/EolRun.cpp" line="194"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="194"/>
+        <location filename="../model/eol/EolRun.cpp" line="203"/>
         <source>recording the result</source>
         <translation>結果を記録しています</translation>
     </message>
@@ -5679,149 +5779,179 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="88"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Who tests it (default: the login name).</source>
         <translation>試験者（既定: ログイン名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
+        <translation>レシピの規則で止められる再試験（合格済みのシリアル、または試験回数を使い切ったもの）を技術者が許可します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="141"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="154"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="169"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="190"/>
+        <location filename="../cli/EolRunCommand.cpp" line="195"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="199"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="199"/>
+        <location filename="../cli/EolRunCommand.cpp" line="204"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="221"/>
+        <location filename="../cli/EolRunCommand.cpp" line="223"/>
+        <source>error: %1; nothing was sent</source>
+        <translation>エラー: %1。何も送信していません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <source>a technician allows it with --retest</source>
+        <translation>技術者は --retest で許可できます</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <source>note: %1; tested again as --retest allows</source>
+        <translation>注: %1。--retest の許可により再試験します</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="231"/>
+        <source>note: %1</source>
+        <translation>注: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="250"/>
         <source>station: %1</source>
         <translation>ステーション: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <location filename="../cli/EolRunCommand.cpp" line="254"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="262"/>
-        <location filename="../cli/EolRunCommand.cpp" line="283"/>
+        <location filename="../cli/EolRunCommand.cpp" line="291"/>
+        <location filename="../cli/EolRunCommand.cpp" line="312"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="288"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="288"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="306"/>
+        <location filename="../cli/EolRunCommand.cpp" line="335"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="336"/>
+        <location filename="../cli/EolRunCommand.cpp" line="366"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="342"/>
+        <location filename="../cli/EolRunCommand.cpp" line="368"/>
+        <source>attempt %1</source>
+        <translation>%1 回目の試験</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="344"/>
+        <location filename="../cli/EolRunCommand.cpp" line="377"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="349"/>
+        <location filename="../cli/EolRunCommand.cpp" line="382"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -5853,78 +5983,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="172"/>
+        <location filename="../model/eol/EolStation.cpp" line="168"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="169"/>
+        <location filename="../model/eol/EolStation.cpp" line="165"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>接続できません（%1）。自動で再試行中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="179"/>
+        <location filename="../model/eol/EolStation.cpp" line="176"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="183"/>
+        <location filename="../model/eol/EolStation.cpp" line="180"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="188"/>
+        <location filename="../model/eol/EolStation.cpp" line="185"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="195"/>
+        <location filename="../model/eol/EolStation.cpp" line="192"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="197"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="199"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="205"/>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="202"/>
+        <location filename="../model/eol/EolStation.cpp" line="246"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="209"/>
+        <location filename="../model/eol/EolStation.cpp" line="206"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="213"/>
+        <location filename="../model/eol/EolStation.cpp" line="210"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="231"/>
+        <location filename="../model/eol/EolStation.cpp" line="228"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>ステーションのドライブが安全ではありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="288"/>
+        <location filename="../model/eol/EolStation.cpp" line="311"/>
+        <source>no unit was started yet</source>
+        <translation>まだ試験を開始した製品がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="323"/>
         <source>cancelled before it started</source>
         <translation>開始前に取り消されました</translation>
     </message>
@@ -9408,87 +9543,87 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
         <source>Operator:</source>
         <translation>作業者:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="96"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="97"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="193"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9497,197 +9632,210 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="254"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="269"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="268"/>
-        <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
-        <translation>試験 %1 · 合格 %2 · 不合格 %3 · 直行率 %4 %</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="300"/>
         <source>another</source>
         <translation>別のユニット</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="334"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="471"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="485"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="177"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="348"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="353"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="374"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <source>Unit %1 — attempt %2</source>
+        <translation>製品 %1 — %2 回目</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="382"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1、未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="397"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（このステーションに保管）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="414"/>
         <source>NOT RECORDED</source>
         <translation>未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="436"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
-    <message numerus="yes">
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="457"/>
+        <source>STATION ERROR</source>
+        <translation>ステーションエラー</translation>
+    </message>
+    <message>
         <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <source>%1
+Not a verdict on the unit: fix the cause and test it again.</source>
+        <translation>%1
+製品の判定ではありません。原因を取り除いてから再試験してください。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="476"/>
         <source>it does not answer</source>
         <translation>データベースが応答しません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="465"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="479"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="181"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="429"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="437"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="415"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="453"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="448"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="388"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10400,12 +10548,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="254"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 は %2 MB を超えています（レシピファイルの上限）。レシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="270"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -10471,143 +10619,158 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>OpenTOP のレシピファイルではありません: JSON がオブジェクトではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="70"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="72"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: レシピにドライバが指定されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="75"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="77"/>
         <source>%1: must be an object</source>
         <translation>%1: オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="92"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot; が &quot;%2&quot; ではなく &quot;%1&quot; です）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot;: &quot;%1&quot; がありません）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="99"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; は 1 以上の整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>新しい OpenTOP で書き込まれています（レシピフォーマットバージョン %1）。このバージョンが読み込めるのはレシピフォーマットバージョン %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>レシピにチェックサムがありません（&quot;checksum&quot;: &quot;sha256:…&quot;）。OpenTOP で書き込まれていないか、書込み後に変更されています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="113"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>書込み後にレシピが変更されています（チェックサム不一致）。変更を承認するには OpenTOP で開いて保存してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="130"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot; は局番 1–247 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="176"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="178"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot; は数値またはテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="192"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="194"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot; は &quot;%3&quot; ではなく &quot;csv&quot; または &quot;operator&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="205"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="207"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なステップタイプ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="219"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="221"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot; は運転データ番号（例: 2）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="232"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="234"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot; は &quot;cw&quot; または &quot;ccw&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="276"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="278"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1: &quot;equals&quot; または規格値のいずれか一方を指定してください（両方は不可）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="282"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="284"/>
         <source>%1: unknown step</source>
         <translation>%1: 不明なステップ</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="298"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="300"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1: &quot;unit&quot; はテキストでなければなりません（単位のない値は &quot;&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="303"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1: 規格値には &quot;lower&quot;、&quot;upper&quot;、またはその両方が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="309"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="312"/>
+        <source>&quot;retest&quot; must be an object</source>
+        <translation>&quot;retest&quot; はオブジェクトでなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="321"/>
+        <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
+        <translation>retest: &quot;maxAttempts&quot; は 0（制限なし）から 100 までの整数でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="331"/>
+        <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
+        <translation>retest: &quot;passedSerial&quot; は &quot;%1&quot; ではなく technician、refuse、allow のいずれかでなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="343"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 不明なキー &quot;%2&quot;。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="323"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="357"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; は空でないテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="324"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; はテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="336"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot; はテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="339"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="373"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot; は空でないテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="349"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot; は数値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="375"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="409"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="378"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="412"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; のエントリが %3 個あります。最大 %4 個までです</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="418"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: すべてのエントリはオブジェクトでなければなりません</translation>
     </message>
@@ -11992,7 +12155,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="142"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="152"/>
         <source>no unit record %1</source>
         <translation>製品の記録 %1 がありません</translation>
     </message>
@@ -12000,20 +12163,25 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="151"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="200"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果データベースのスキーマバージョン %1 は、このプログラムが対応するバージョン (%2) より新しいです: このステーションの OpenTOP を更新してください。何も書き込んでいません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSchema.cpp" line="235"/>
+        <source>the migration left a record pointing at no unit (table %1)</source>
+        <translation>マイグレーション後、どの製品も指していない記録が残っています（テーブル %1）</translation>
     </message>
 </context>
 <context>
     <name>opentop::ResultSink</name>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="136"/>
+        <location filename="../model/eol/ResultSink.cpp" line="137"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開かれていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="205"/>
+        <location filename="../model/eol/ResultSink.cpp" line="210"/>
         <source>the results database refuses unit %1 (serial %2): %3</source>
         <translation>結果データベースがユニット %1（シリアル番号 %2）を拒否しています: %3</translation>
     </message>
@@ -12050,22 +12218,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>製品にはシリアル番号が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="160"/>
-        <source>a unit is finished with pass, fail or aborted, not %1</source>
-        <translation>製品の終了は pass、fail、aborted のいずれかです（%1 は不可）</translation>
+        <location filename="../model/eol/ResultStore.cpp" line="178"/>
+        <source>a unit is finished with pass, fail, error or aborted, not %1</source>
+        <translation>製品の終了は pass、fail、error、aborted のいずれかで、%1 は使えません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="190"/>
+        <location filename="../model/eol/ResultStore.cpp" line="208"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>製品 %1（シリアル %2）は結果データベースで開始されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="192"/>
+        <location filename="../model/eol/ResultStore.cpp" line="210"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>製品 %1（シリアル %2）はすでに %3 として記録されています。その記録を保持します</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="210"/>
+        <location filename="../model/eol/ResultStore.cpp" line="233"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>製品 %1（シリアル %2）は結果データベースで実行中ではありません: 開始されていないか、すでに終了または中断としてマークされています</translation>
     </message>
@@ -12073,32 +12241,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="44"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="45"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>データベースが指定されていません: ファイルまたは postgresql:// URL を指定してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="52"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="53"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>不明なデータベース URL &quot;%1&quot;: ファイルパス、sqlite:PATH、postgresql://user@host/database のいずれかを使用してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="56"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="57"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: にはファイルパスが必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="85"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="86"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; のホストに閉じ括弧 ] がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="113"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="114"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>データベース URL の不明な接続オプション &quot;%1&quot;。既知: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="136"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="137"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>データベース URL のポート &quot;%1&quot; が 1–65535 の数値ではありません</translation>
     </message>
@@ -12272,91 +12440,113 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>検索しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="352"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="345"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="293"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="297"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="292"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="319"/>
-        <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
-            <numerusform>製品 %n 台、合格 %1 台 · 直行率 %2（%4 シリアル中 %3）</numerusform>
+            <numerusform>製品 %n 台: 合格 %1、不合格 %2、ステーションエラー %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="379"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
         <source>no unit is selected</source>
         <translation>製品が選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="324"/>
         <source>Reading unit %1…</source>
         <translation>製品 %1 を読み出しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="380"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="374"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>製品の記録をまだ読み出しています</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="389"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
         <source>Open results database</source>
         <translation>結果データベースを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="390"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="384"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite データベース (*.db *.sqlite);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
         <source>Export units as CSV</source>
         <translation>製品を CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="405"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="399"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>製品 %n 台を %1 に書き込みました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
         <source>Save certificate</source>
         <translation>検査成績書を保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="417"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="411"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF ファイル (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="422"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
         <source>Certificate written to %1</source>
         <translation>検査成績書を %1 に書き込みました</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RetestPolicy</name>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="20"/>
+        <source>serial %1 has passed already; this recipe never tests a passed unit again</source>
+        <translation>シリアル %1 はすでに合格しています。このレシピでは合格済みの製品を再試験しません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="23"/>
+        <source>serial %1 has passed already; testing it again needs a technician</source>
+        <translation>シリアル %1 はすでに合格しています。再試験には技術者の許可が必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="29"/>
+        <source>serial %1 was tested %2 times under this recipe, its limit; another attempt needs a technician</source>
+        <translation>シリアル %1 はこのレシピで %2 回試験され、上限に達しています。再試験には技術者の許可が必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="50"/>
+        <source>the results database is not open</source>
+        <translation>結果データベースが開いていません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="58"/>
+        <source>earlier tests of %1 were not checked (%2): the result is kept in the station&apos;s spool</source>
+        <translation>%1 の過去の試験を確認できませんでした（%2）。結果はステーションの保管ファイルに保管されます</translation>
     </message>
 </context>
 <context>
@@ -14220,6 +14410,101 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
 </context>
 <context>
+    <name>opentop::StationActions</name>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="19"/>
+        <source>Reset alarm and test again</source>
+        <translation>アラームリセットして再試験</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="20"/>
+        <source>Technician: test again…</source>
+        <translation>技術者: 再試験…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="50"/>
+        <source>Resetting the alarm of machine number %1…</source>
+        <translation>局番 %1 のアラームをリセットしています…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="59"/>
+        <source>The alarm is not cleared; nothing was started:
+%1</source>
+        <translation>アラームが解除されていません。何も開始していません:
+%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="84"/>
+        <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
+        <translation>試験前に局番 %1 でアラームが発生していました。何も書き込んでいません。アラームをリセットすると（ドライバ自身のリセット。電源再投入が必要なアラームはその旨を表示します）、製品を再試験します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="97"/>
+        <source>(no name)</source>
+        <translation>（名前なし）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="99"/>
+        <source>Test again</source>
+        <translation>再試験</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="100"/>
+        <source>%1
+
+Test unit %2 again? It is recorded as allowed by %3.</source>
+        <translation>%1
+
+製品 %2 を再試験しますか？ %3 が許可したものとして記録されます。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationAlarmReset</name>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="55"/>
+        <source>machine number %1: not connected to a bus</source>
+        <translation>局番 %1: バスに接続されていません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
+        <source>machine number %1 is not a position of the recipe</source>
+        <translation>局番 %1 はレシピの位置にありません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="65"/>
+        <source>machine number %1: %2 drives have no alarm reset command; switch the drive off and on</source>
+        <translation>局番 %1: %2 ドライバにはアラームリセットコマンドがありません。ドライバの電源を入れ直してください</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="75"/>
+        <source>machine number %1: %2</source>
+        <translation>局番 %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationFigures</name>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="25"/>
+        <source>This shift: no figures yet (%1)</source>
+        <translation>このシフト: まだ集計なし（%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="26"/>
+        <source>results database not read</source>
+        <translation>結果データベースをまだ読み込んでいません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="29"/>
+        <source>This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5</source>
+        <translation>このシフト: 試験 %1 · 合格 %2 · 不合格 %3 · ステーションエラー %4 · %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="35"/>
+        <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
+        <translation>このステーション、このレシピバージョン、%1 以降（%2 に読込み）。同じ数値を表示するコマンド: %3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationSafeState</name>
     <message>
         <location filename="../model/eol/StationSafeState.cpp" line="28"/>
@@ -14285,6 +14570,14 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <location filename="../model/eol/StationSafeState.cpp" line="224"/>
         <source>control could not be given back to its inputs: %1</source>
         <translation>制御を入力端子に戻せません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationYield</name>
+    <message>
+        <location filename="../model/eol/StationYield.cpp" line="48"/>
+        <source>the results database is not open</source>
+        <translation>結果データベースが開いていません</translation>
     </message>
 </context>
 <context>
@@ -16758,27 +17051,27 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="106"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>製品の記録ではありません（format が &quot;%1&quot; ではありません）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="108"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="109"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>製品記録のバージョン %1 はこのプログラムでは不明です（%2 まで読込み可能）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
         <source>the unit record has no serial number</source>
         <translation>製品記録にシリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="127"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="128"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>不明な製品ステータス &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="171"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="173"/>
         <source>not JSON: %1</source>
         <translation>JSON ではありません: %1</translation>
     </message>
@@ -17088,22 +17381,47 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::YieldReport</name>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="51"/>
+        <location filename="../model/eol/YieldReport.cpp" line="100"/>
+        <source>%1 rev. %2</source>
+        <translation>%1 rev. %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="105"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="111"/>
+        <source>first-pass yield – (no serial tested yet)</source>
+        <translation>直行率 –（まだ試験したシリアルなし）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="112"/>
+        <source>first-pass yield %1 (%2 of %3 serials) · second-pass %4 · last-pass %5</source>
+        <translation>直行率 %1（%3 シリアル中 %2）· 2 回目までの合格率 %4 · 最終合格率 %5</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="125"/>
         <source>still running (or its station has not restarted since it stopped)</source>
         <translation>まだ実行中（または停止後にステーションが再起動していません）</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="53"/>
+        <location filename="../model/eol/YieldReport.cpp" line="127"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="55"/>
+        <location filename="../model/eol/YieldReport.cpp" line="129"/>
         <source>aborted</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="57"/>
+        <location filename="../model/eol/YieldReport.cpp" line="131"/>
+        <source>station error, no reason recorded</source>
+        <translation>ステーションエラー、理由の記録なし</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="133"/>
         <source>failed, no reason recorded</source>
         <translation>不合格、理由の記録なし</translation>
     </message>

@@ -2391,7 +2391,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
@@ -2402,188 +2402,239 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <source>STATION ERROR</source>
+        <translation>스테이션 오류</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>INTERRUPTED</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
         <source>NOT FINISHED</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="65"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="67"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="72"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="74"/>
         <source>End-of-line test certificate</source>
         <translation>출하 검사 성적서</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="75"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
         <source>Serial number</source>
         <translation>시리얼 번호</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>%1, revision %2</source>
         <translation>%1, 개정 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
         <source>Recipe checksum</source>
         <translation>레시피 체크섬</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <source>Attempt</source>
+        <translation>검사 회차</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <source>%1 (tests of this serial under this recipe)</source>
+        <translation>%1회차 (이 레시피에서 이 시리얼의 검사 차수)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <source>not counted (recorded before attempts were)</source>
+        <translation>집계 안 됨 (검사 회차를 기록하기 전의 기록)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>Ended</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>Record</source>
         <translation>기록</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="96"/>
         <source>First failure:</source>
         <translation>첫 불합격 항목:</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <source>This serial failed %n earlier test(s); they are listed below.</source>
+        <translation>
+            <numerusform>이 시리얼은 이전 검사에서 %n회 불합격했습니다. 아래에 그 목록이 있습니다.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Drives</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Variant</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Written</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Read back</source>
         <translation>다시 읽은 값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="101"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
         <source>Verified</source>
         <translation>검증</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>already set</source>
         <translation>이미 설정됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>yes</source>
         <translation>예</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>NO</source>
         <translation>아니요</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="108"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Measurements</source>
         <translation>측정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Step</source>
         <translation>단계</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Quantity</source>
         <translation>측정 항목</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Limits</source>
         <translation>한계값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>pass</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <source>Earlier tests of this serial</source>
+        <translation>이 시리얼의 이전 검사</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <source>Reason</source>
+        <translation>원인</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="139"/>
+        <source>%1 rev. %2</source>
+        <translation>%1 개정 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
         <source>Bus traffic around the failure</source>
         <translation>불합격 전후의 버스 통신</translation>
     </message>
@@ -2596,7 +2647,7 @@ Drives: %5</source>
         <translation>출하 검사 성적서 %1</translation>
     </message>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="53"/>
+        <location filename="../report/CertificatePdf.cpp" line="54"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · %4쪽 중 %3쪽</translation>
     </message>
@@ -2635,6 +2686,7 @@ group is checked before a write or command
 
 Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 (nothing written), 4 verification mismatch or a drive that did not stop,
+5 eol run FAIL, 6 eol run station error (no verdict on the unit),
 130 interrupted by Ctrl-C, SIGTERM or SIGHUP (what was done is reported).
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
@@ -2654,24 +2706,25 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 종료 코드: 0 성공, 1 통신 실패, 2 사용법 오류, 3 잘못된 값 또는 파일
 (아무것도 쓰지 않음), 4 검증 불일치 또는 정지하지 않은 드라이버 있음,
+5 eol run 불합격, 6 eol run 스테이션 오류(제품 판정 없음),
 130 Ctrl-C, SIGTERM 또는 SIGHUP으로 중단됨(수행한 작업은 보고함).
 
 &quot;%1 help COMMAND&quot;로 명령의 옵션을 볼 수 있습니다.
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="167"/>
-        <location filename="../cli/CliApp.cpp" line="221"/>
+        <location filename="../cli/CliApp.cpp" line="168"/>
+        <location filename="../cli/CliApp.cpp" line="222"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot;를 실행해 보십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="187"/>
+        <location filename="../cli/CliApp.cpp" line="188"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 알 수 없는 명령 &quot;%2&quot;; 명령: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="195"/>
+        <location filename="../cli/CliApp.cpp" line="196"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2680,12 +2733,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="209"/>
+        <location filename="../cli/CliApp.cpp" line="210"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3은(는) 이 명령의 옵션이 아닙니다. &quot;%1 help %2&quot;를 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="220"/>
+        <location filename="../cli/CliApp.cpp" line="221"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4715,7 +4768,7 @@ Configuration changes written but not stored are discarded.</source>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
         <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="137"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="142"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -4736,6 +4789,7 @@ Configuration changes written but not stored are discarded.</source>
     </message>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
@@ -4750,7 +4804,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="140"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="145"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>%1 저장함: 시리얼 번호 %2, %3, 기록 시각 %4</translation>
     </message>
@@ -4807,122 +4861,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>식별 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="73"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
         <source>no drive answers at machine number %1</source>
         <translation>국번 %1에서 응답하는 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="74"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="77"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>국번 %1의 드라이버가 식별되지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="91"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 드라이버입니다. 레시피에는 %2 드라이버가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 레시피가 허용하는 기종: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="96"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>기종 %1, 레시피가 허용하는 기종: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="102"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>펌웨어 %1, 레시피가 허용하는 펌웨어: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="116"/>
         <source>no profile for the family %1</source>
         <translation>제품군 %1의 프로파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
-        <source>cannot read whether the motor runs: %1</source>
-        <translation>모터 운전 여부를 읽을 수 없습니다: %1</translation>
+        <location filename="../model/eol/EolDriveRun.cpp" line="162"/>
+        <source>cannot read whether the motor runs or an alarm is active: %1</source>
+        <translation>모터 운전 여부나 알람 발생 여부를 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="149"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="163"/>
+        <source>no answer</source>
+        <translation>응답 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="170"/>
         <source>its motor was running before the test</source>
         <translation>검사 전에 모터가 운전 중이었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="150"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="171"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>검사 전에 모터가 이미 운전 중입니다(중단된 검사가 남긴 상태?). 아무것도 쓰지 않았습니다: 먼저 정지하십시오(전체 정지 또는 드라이버에서)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="160"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="178"/>
+        <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
+        <translation>검사 전에 알람이 발생해 있습니다(이전 제품이 남긴 알람?). 아무것도 쓰지 않았습니다: 알람을 리셋하고 다시 검사하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="188"/>
         <source>writing the settings</source>
         <translation>설정 쓰는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="230"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="237"/>
         <source>writing the settings: %1</source>
         <translation>설정 쓰는 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="217"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="245"/>
         <source>reading every setting back</source>
         <translation>모든 설정을 다시 읽는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="232"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="260"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1을(를) 다시 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1이(가) 값을 유지하지 않습니다: %2(으)로 설정했지만 %3(으)로 읽힘</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
         <source>verifying the settings: %1</source>
         <translation>설정 검증 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="256"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="284"/>
         <source>arming the communication-loss stop</source>
         <translation>통신 두절 정지를 설정하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="261"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="289"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="274"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="302"/>
         <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
         <translation>통신 두절 정지를 설정할 수 없습니다(%1 = %2 s): %3. 이 기능 없이 모터를 기동하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="306"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="334"/>
         <source>testing</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="310"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="338"/>
         <source>step %1 of %2: %3</source>
         <translation>단계 %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="366"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="401"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
@@ -5357,262 +5421,298 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="65"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>결과 데이터베이스의 제품 목록, 직행률을 표시하거나 CSV로 내보냅니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="72"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>결과 데이터베이스: SQLite 파일, sqlite:PATH 또는 postgresql://user@host/db (기본값: OPENTOP_EOL_DB, 없으면 ~/.local/share/opentop/results.db).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="76"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results: 이 일련번호만. * 또는 ?가 있으면 대소문자를 구분하지 않는 패턴(&quot;SN-10*&quot;).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 또는 그 이후에 시작한 것 (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: started before T.</source>
         <translation>results: T 이전에 시작한 것.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: 이 레시피(제품 이름)만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
-        <source>results: pass, fail, interrupted, aborted or running.</source>
-        <translation>results: pass, fail, interrupted, aborted 또는 running.</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only this station.</source>
         <translation>results: 이 스테이션만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>results: only the newest N units.</source>
         <translation>results: 최신 제품 N대만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV(RFC 4180)를 표준 출력 또는 -o FILE로.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
-        <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
-        <translation>results: 레시피별·근무조별 직행률과 불합격 원인.</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: 근무조 시작 시각(현지 시간, 기본값 06:00,14:00,22:00).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="126"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot;은(는) 시각이 아닙니다. 2026-11-24, 2026-11-24T06:00 (현지 시간, 또는 Z나 +01:00 포함), 8h, 2d, today 또는 yesterday를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="136"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="156"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1이(가) --until %2보다 이전이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="162"/>
-        <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
-        <translation>--verdict &quot;%1&quot;: pass, fail, interrupted, aborted 또는 running을 주십시오</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
+        <translation>results: 이 버전의 레시피만(eol recipe check가 출력하는 체크섬으로 지정).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="169"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
+        <source>SUM</source>
+        <translation>SUM</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
+        <translation>results: pass, fail, error(스테이션 오류), interrupted, aborted 또는 running.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
+        <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
+        <translation>results: 레시피 버전별·근무조별 직행률, 2회 이내 합격률, 최종 합격률과 불합격 원인. 스테이션 오류와 중지는 수율에 넣지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
+        <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
+        <translation>--verdict &quot;%1&quot;: pass, fail, error, interrupted, aborted 또는 running을 지정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 1 이상의 제품 수를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="205"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="222"/>
         <source>no unit matches</source>
         <translation>일치하는 제품 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
         <source>recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>time</source>
         <translation>시간</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="191"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
         <source>shift</source>
         <translation>근무조</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>serials</source>
         <translation>시리얼 수</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>first pass</source>
         <translation>1회 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
-        <source>first-pass yield</source>
-        <translation>직행률</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <source>second pass</source>
+        <translation>2회 이내 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
-        <source>records</source>
-        <translation>기록 수</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <source>last pass</source>
+        <translation>최종 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="213"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>passed</source>
+        <translation>합격</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>failed</source>
+        <translation>불합격</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>station errors</source>
+        <translation>스테이션 오류</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="250"/>
+        <source>Yield per recipe version (station errors and aborts are not counted)</source>
+        <translation>레시피 버전별 수율 (스테이션 오류와 중지는 집계하지 않음)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="258"/>
+        <source>%1: checksum %2</source>
+        <translation>%1: 체크섬 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>not finished</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
-        <source>First-pass yield per recipe</source>
-        <translation>레시피별 직행률</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="259"/>
         <source>Per shift</source>
         <translation>근무조별</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="236"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
         <source>Failure reasons</source>
         <translation>불합격 원인</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="257"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="274"/>
+        <source>Station errors (not counted in yield)</source>
+        <translation>스테이션 오류 (수율에 집계하지 않음)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>wrote %1</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>오류: 예상치 못한 인수 &quot;%1&quot;; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="272"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="306"/>
         <source>error: give --csv or --json, not both</source>
         <translation>오류: --csv와 --json 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="310"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>오류: -o는 CSV 파일을 지정합니다: --csv도 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="281"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
         <source>error: --shifts is for --yield</source>
         <translation>오류: --shifts는 --yield와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="325"/>
         <source>error: --shifts %1: %2</source>
         <translation>오류: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="311"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="343"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="369"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
@@ -5630,48 +5730,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>결과 데이터베이스에 제품을 기록할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="92"/>
+        <location filename="../model/eol/EolRun.cpp" line="94"/>
         <source>the recipe has no drives</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="105"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>the recipe is not valid: %1</source>
         <translation>레시피가 올바르지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="110"/>
+        <location filename="../model/eol/EolRun.cpp" line="112"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: 이 제품의 %2 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="128"/>
+        <location filename="../model/eol/EolRun.cpp" line="130"/>
         <source>cancelled by the operator</source>
         <translation>작업자가 취소함</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="137"/>
+        <location filename="../model/eol/EolRun.cpp" line="141"/>
         <source>the connection was lost: %1</source>
         <translation>연결이 끊겼습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="143"/>
-        <location filename="../model/eol/EolRun.cpp" line="150"/>
+        <location filename="../model/eol/EolRun.cpp" line="149"/>
+        <location filename="../model/eol/EolRun.cpp" line="157"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="147"/>
+        <location filename="../model/eol/EolRun.cpp" line="154"/>
         <source>%1 failed</source>
         <translation>%1 실패</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="185"/>
+        <location filename="../model/eol/EolRun.cpp" line="194"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="194"/>
+        <location filename="../model/eol/EolRun.cpp" line="203"/>
         <source>recording the result</source>
         <translation>결과를 기록하는 중</translation>
     </message>
@@ -5679,149 +5779,179 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="88"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Who tests it (default: the login name).</source>
         <translation>검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
+        <translation>레시피 규칙으로 막힌 재검사(이미 합격한 시리얼, 또는 검사 횟수를 다 쓴 시리얼)를 기술자가 허가합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="141"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="154"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="169"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="190"/>
+        <location filename="../cli/EolRunCommand.cpp" line="195"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="199"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="199"/>
+        <location filename="../cli/EolRunCommand.cpp" line="204"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="221"/>
+        <location filename="../cli/EolRunCommand.cpp" line="223"/>
+        <source>error: %1; nothing was sent</source>
+        <translation>오류: %1. 아무것도 보내지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <source>a technician allows it with --retest</source>
+        <translation>기술자가 --retest로 허가할 수 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <source>note: %1; tested again as --retest allows</source>
+        <translation>참고: %1. --retest의 허가로 다시 검사합니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="231"/>
+        <source>note: %1</source>
+        <translation>참고: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="250"/>
         <source>station: %1</source>
         <translation>스테이션: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <location filename="../cli/EolRunCommand.cpp" line="254"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="262"/>
-        <location filename="../cli/EolRunCommand.cpp" line="283"/>
+        <location filename="../cli/EolRunCommand.cpp" line="291"/>
+        <location filename="../cli/EolRunCommand.cpp" line="312"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="288"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="288"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="306"/>
+        <location filename="../cli/EolRunCommand.cpp" line="335"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="336"/>
+        <location filename="../cli/EolRunCommand.cpp" line="366"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="342"/>
+        <location filename="../cli/EolRunCommand.cpp" line="368"/>
+        <source>attempt %1</source>
+        <translation>%1회차 검사</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="344"/>
+        <location filename="../cli/EolRunCommand.cpp" line="377"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="349"/>
+        <location filename="../cli/EolRunCommand.cpp" line="382"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -5853,78 +5983,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="172"/>
+        <location filename="../model/eol/EolStation.cpp" line="168"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="169"/>
+        <location filename="../model/eol/EolStation.cpp" line="165"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="179"/>
+        <location filename="../model/eol/EolStation.cpp" line="176"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="183"/>
+        <location filename="../model/eol/EolStation.cpp" line="180"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="188"/>
+        <location filename="../model/eol/EolStation.cpp" line="185"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="195"/>
+        <location filename="../model/eol/EolStation.cpp" line="192"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="197"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="199"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="205"/>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="202"/>
+        <location filename="../model/eol/EolStation.cpp" line="246"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="209"/>
+        <location filename="../model/eol/EolStation.cpp" line="206"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="213"/>
+        <location filename="../model/eol/EolStation.cpp" line="210"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="231"/>
+        <location filename="../model/eol/EolStation.cpp" line="228"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="288"/>
+        <location filename="../model/eol/EolStation.cpp" line="311"/>
+        <source>no unit was started yet</source>
+        <translation>아직 검사를 시작한 제품이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="323"/>
         <source>cancelled before it started</source>
         <translation>시작 전에 취소됨</translation>
     </message>
@@ -9408,87 +9543,87 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
         <source>Operator:</source>
         <translation>작업자:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="96"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="97"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="193"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>READY</source>
         <translation>준비 완료</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9497,197 +9632,210 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="254"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="269"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="268"/>
-        <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
-        <translation>검사 %1 · 합격 %2 · 불합격 %3 · 직행률 %4 %</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="300"/>
         <source>another</source>
         <translation>다른 유닛</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="334"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="471"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="485"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="177"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="348"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="353"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="374"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <source>Unit %1 — attempt %2</source>
+        <translation>제품 %1 — %2회차</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="382"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1, 기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="397"/>
         <source>%1 (kept on this station)</source>
         <translation>%1 (이 스테이션에 보관)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="414"/>
         <source>NOT RECORDED</source>
         <translation>기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="436"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
-    <message numerus="yes">
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="457"/>
+        <source>STATION ERROR</source>
+        <translation>스테이션 오류</translation>
+    </message>
+    <message>
         <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <source>%1
+Not a verdict on the unit: fix the cause and test it again.</source>
+        <translation>%1
+제품 판정이 아닙니다: 원인을 해결한 뒤 다시 검사하십시오.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="476"/>
         <source>it does not answer</source>
         <translation>데이터베이스가 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="465"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="479"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="181"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="429"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="437"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="415"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="453"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="448"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="388"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10400,12 +10548,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="254"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1이(가) 레시피 파일의 최대 크기 %2 MB보다 큽니다. 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="270"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -10471,143 +10619,158 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>OpenTOP 레시피 파일이 아닙니다: JSON이 객체가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="70"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="72"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: 레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="75"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="77"/>
         <source>%1: must be an object</source>
         <translation>%1: 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="92"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;이 &quot;%2&quot;이(가) 아니라 &quot;%1&quot;입니다)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;: &quot;%1&quot; 없음)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="99"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot;은 1 이상의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>더 새로운 OpenTOP에서 저장한 파일입니다(레시피 형식 버전 %1). 이 버전은 레시피 형식 버전 %2을(를) 읽습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>레시피에 체크섬이 없습니다(&quot;checksum&quot;: &quot;sha256:…&quot;). OpenTOP에서 저장한 파일이 아니거나 저장 후 변경되었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="113"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>레시피가 저장된 후 변경되었습니다(체크섬 불일치). 변경을 승인하려면 OpenTOP에서 열어 저장하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="130"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot;는 국번 1–247이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="176"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="178"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot;는 숫자 또는 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="192"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="194"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot;는 &quot;%3&quot;이(가) 아니라 &quot;csv&quot; 또는 &quot;operator&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="205"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="207"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 단계 유형 &quot;%2&quot;; 알려진 유형: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="219"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="221"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot;는 2와 같은 운전 데이터 번호여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="232"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="234"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot;은 &quot;cw&quot; 또는 &quot;ccw&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="276"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="278"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1: &quot;equals&quot;와 한계값 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="282"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="284"/>
         <source>%1: unknown step</source>
         <translation>%1: 알 수 없는 단계</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="298"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="300"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1: &quot;unit&quot;은 텍스트여야 합니다(단위가 없는 값은 &quot;&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="303"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1: 한계값에는 &quot;lower&quot;, &quot;upper&quot; 또는 둘 다 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="309"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="312"/>
+        <source>&quot;retest&quot; must be an object</source>
+        <translation>&quot;retest&quot;는 객체여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="321"/>
+        <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
+        <translation>retest: &quot;maxAttempts&quot;는 0(제한 없음)부터 100까지의 정수여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="331"/>
+        <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
+        <translation>retest: &quot;passedSerial&quot;은 &quot;%1&quot;이(가) 아니라 technician, refuse 또는 allow여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="343"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 알 수 없는 키 &quot;%2&quot;; 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="323"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="357"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot;은(는) 비어 있지 않은 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="324"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot;은(는) 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="336"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot;은(는) 텍스트 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="339"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="373"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot;은(는) 비어 있지 않은 텍스트의 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="349"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot;은(는) 숫자여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="375"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="409"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot;은(는) 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="378"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="412"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot;에 항목이 %3개 있습니다. 최대 %4개까지 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="418"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: 모든 항목은 객체여야 합니다</translation>
     </message>
@@ -11992,7 +12155,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="142"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="152"/>
         <source>no unit record %1</source>
         <translation>제품 기록 %1 없음</translation>
     </message>
@@ -12000,20 +12163,25 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="151"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="200"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>결과 데이터베이스의 스키마 버전 %1이(가) 이 프로그램이 아는 버전(%2)보다 새롭습니다: 이 스테이션의 OpenTOP을 업데이트하십시오. 아무것도 쓰지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSchema.cpp" line="235"/>
+        <source>the migration left a record pointing at no unit (table %1)</source>
+        <translation>마이그레이션 후 어떤 제품도 가리키지 않는 기록이 남았습니다(테이블 %1)</translation>
     </message>
 </context>
 <context>
     <name>opentop::ResultSink</name>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="136"/>
+        <location filename="../model/eol/ResultSink.cpp" line="137"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="205"/>
+        <location filename="../model/eol/ResultSink.cpp" line="210"/>
         <source>the results database refuses unit %1 (serial %2): %3</source>
         <translation>결과 데이터베이스가 유닛 %1(일련번호 %2)을 거부합니다: %3</translation>
     </message>
@@ -12050,22 +12218,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>제품에는 시리얼 번호가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="160"/>
-        <source>a unit is finished with pass, fail or aborted, not %1</source>
-        <translation>제품은 pass, fail 또는 aborted로 끝나야 합니다. %1은(는) 안 됩니다</translation>
+        <location filename="../model/eol/ResultStore.cpp" line="178"/>
+        <source>a unit is finished with pass, fail, error or aborted, not %1</source>
+        <translation>제품은 %1이(가) 아니라 pass, fail, error 또는 aborted로 끝나야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="190"/>
+        <location filename="../model/eol/ResultStore.cpp" line="208"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 시작된 적이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="192"/>
+        <location filename="../model/eol/ResultStore.cpp" line="210"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>제품 %1(시리얼 %2)은(는) 이미 %3(으)로 기록되어 있습니다. 기존 기록을 유지합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="210"/>
+        <location filename="../model/eol/ResultStore.cpp" line="233"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 진행 중이 아닙니다: 시작된 적이 없거나, 이미 끝났거나, 중단됨으로 표시되었습니다</translation>
     </message>
@@ -12073,32 +12241,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="44"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="45"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>데이터베이스가 지정되지 않았습니다: 파일 또는 postgresql:// URL을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="52"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="53"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>알 수 없는 데이터베이스 URL &quot;%1&quot;: 파일 경로, sqlite:PATH 또는 postgresql://user@host/database를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="56"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="57"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite:에는 파일 경로가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="85"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="86"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot;의 호스트에 닫는 ]가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="113"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="114"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>데이터베이스 URL에 알 수 없는 연결 옵션 &quot;%1&quot;; 알려진 옵션: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="136"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="137"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>데이터베이스 URL의 포트 &quot;%1&quot;이(가) 1–65535의 숫자가 아닙니다</translation>
     </message>
@@ -12272,91 +12440,113 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>검색하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="352"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="345"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="293"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="297"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="292"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="319"/>
-        <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
-            <numerusform>제품 %n대, 합격 %1 · 직행률 %2 (시리얼 %4개 중 %3개)</numerusform>
+            <numerusform>제품 %n대: 합격 %1, 불합격 %2, 스테이션 오류 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="379"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
         <source>no unit is selected</source>
         <translation>선택한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="324"/>
         <source>Reading unit %1…</source>
         <translation>제품 %1을(를) 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="380"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="374"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>제품 기록을 아직 읽는 중입니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="389"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
         <source>Open results database</source>
         <translation>결과 데이터베이스 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="390"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="384"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 데이터베이스 (*.db *.sqlite);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
         <source>Export units as CSV</source>
         <translation>제품을 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="405"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="399"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>제품 %n대를 %1에 저장했습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
         <source>Save certificate</source>
         <translation>성적서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="417"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="411"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 파일 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="422"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
         <source>Certificate written to %1</source>
         <translation>성적서를 %1에 저장했습니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RetestPolicy</name>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="20"/>
+        <source>serial %1 has passed already; this recipe never tests a passed unit again</source>
+        <translation>시리얼 %1은(는) 이미 합격했습니다. 이 레시피는 합격한 제품을 다시 검사하지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="23"/>
+        <source>serial %1 has passed already; testing it again needs a technician</source>
+        <translation>시리얼 %1은(는) 이미 합격했습니다. 다시 검사하려면 기술자의 허가가 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="29"/>
+        <source>serial %1 was tested %2 times under this recipe, its limit; another attempt needs a technician</source>
+        <translation>시리얼 %1은(는) 이 레시피로 %2회 검사되어 한도에 도달했습니다. 다시 검사하려면 기술자의 허가가 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="50"/>
+        <source>the results database is not open</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="58"/>
+        <source>earlier tests of %1 were not checked (%2): the result is kept in the station&apos;s spool</source>
+        <translation>%1의 이전 검사 기록을 확인하지 못했습니다(%2). 결과는 스테이션 보관 파일에 보관됩니다</translation>
     </message>
 </context>
 <context>
@@ -14220,6 +14410,101 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
     </message>
 </context>
 <context>
+    <name>opentop::StationActions</name>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="19"/>
+        <source>Reset alarm and test again</source>
+        <translation>알람 리셋 후 다시 검사</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="20"/>
+        <source>Technician: test again…</source>
+        <translation>기술자: 다시 검사…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="50"/>
+        <source>Resetting the alarm of machine number %1…</source>
+        <translation>국번 %1의 알람을 리셋하는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="59"/>
+        <source>The alarm is not cleared; nothing was started:
+%1</source>
+        <translation>알람이 해제되지 않았습니다. 아무것도 시작하지 않았습니다:
+%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="84"/>
+        <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
+        <translation>검사 전에 국번 %1에 알람이 발생해 있었습니다. 아무것도 쓰지 않았습니다. 알람을 리셋하면(드라이버 자체의 리셋 사용, 전원 재투입이 필요한 알람은 따로 표시됨) 제품을 다시 검사합니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="97"/>
+        <source>(no name)</source>
+        <translation>(이름 없음)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="99"/>
+        <source>Test again</source>
+        <translation>다시 검사</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="100"/>
+        <source>%1
+
+Test unit %2 again? It is recorded as allowed by %3.</source>
+        <translation>%1
+
+제품 %2을(를) 다시 검사하시겠습니까? %3이(가) 허가한 것으로 기록됩니다.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationAlarmReset</name>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="55"/>
+        <source>machine number %1: not connected to a bus</source>
+        <translation>국번 %1: 버스에 연결되어 있지 않음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
+        <source>machine number %1 is not a position of the recipe</source>
+        <translation>국번 %1은(는) 레시피에 있는 위치가 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="65"/>
+        <source>machine number %1: %2 drives have no alarm reset command; switch the drive off and on</source>
+        <translation>국번 %1: %2 드라이버에는 알람 리셋 명령이 없습니다. 드라이버 전원을 껐다 켜십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="75"/>
+        <source>machine number %1: %2</source>
+        <translation>국번 %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationFigures</name>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="25"/>
+        <source>This shift: no figures yet (%1)</source>
+        <translation>이번 근무조: 아직 집계 없음 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="26"/>
+        <source>results database not read</source>
+        <translation>결과 데이터베이스를 아직 읽지 않음</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="29"/>
+        <source>This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5</source>
+        <translation>이번 근무조: 검사 %1 · 합격 %2 · 불합격 %3 · 스테이션 오류 %4 · %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="35"/>
+        <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
+        <translation>이 스테이션, 이 레시피 버전, %1 이후 (%2에 읽음). 같은 수치를 보는 명령: %3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationSafeState</name>
     <message>
         <location filename="../model/eol/StationSafeState.cpp" line="28"/>
@@ -14285,6 +14570,14 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <location filename="../model/eol/StationSafeState.cpp" line="224"/>
         <source>control could not be given back to its inputs: %1</source>
         <translation>제어를 입력 단자로 되돌릴 수 없습니다: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationYield</name>
+    <message>
+        <location filename="../model/eol/StationYield.cpp" line="48"/>
+        <source>the results database is not open</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
 </context>
 <context>
@@ -16758,27 +17051,27 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="106"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>제품 기록이 아닙니다(format이 &quot;%1&quot;이(가) 아님)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="108"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="109"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>제품 기록 버전 %1은(는) 이 프로그램이 알지 못합니다(%2까지 읽음)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
         <source>the unit record has no serial number</source>
         <translation>제품 기록에 시리얼 번호가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="127"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="128"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>알 수 없는 제품 상태 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="171"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="173"/>
         <source>not JSON: %1</source>
         <translation>JSON이 아닙니다: %1</translation>
     </message>
@@ -17088,22 +17381,47 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::YieldReport</name>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="51"/>
+        <location filename="../model/eol/YieldReport.cpp" line="100"/>
+        <source>%1 rev. %2</source>
+        <translation>%1 개정 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="105"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="111"/>
+        <source>first-pass yield – (no serial tested yet)</source>
+        <translation>직행률 – (아직 검사한 시리얼 없음)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="112"/>
+        <source>first-pass yield %1 (%2 of %3 serials) · second-pass %4 · last-pass %5</source>
+        <translation>직행률 %1 (시리얼 %3개 중 %2개) · 2회 이내 합격률 %4 · 최종 합격률 %5</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="125"/>
         <source>still running (or its station has not restarted since it stopped)</source>
         <translation>아직 진행 중(또는 멈춘 뒤 스테이션이 다시 시작되지 않음)</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="53"/>
+        <location filename="../model/eol/YieldReport.cpp" line="127"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="55"/>
+        <location filename="../model/eol/YieldReport.cpp" line="129"/>
         <source>aborted</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="57"/>
+        <location filename="../model/eol/YieldReport.cpp" line="131"/>
+        <source>station error, no reason recorded</source>
+        <translation>스테이션 오류, 원인 기록 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="133"/>
         <source>failed, no reason recorded</source>
         <translation>불합격, 원인 기록 없음</translation>
     </message>

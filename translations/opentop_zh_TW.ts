@@ -2391,7 +2391,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
@@ -2402,188 +2402,239 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <source>STATION ERROR</source>
+        <translation>工站錯誤</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>INTERRUPTED</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
         <source>NOT FINISHED</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="65"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="67"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="72"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="74"/>
         <source>End-of-line test certificate</source>
         <translation>終檢測試證書</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="75"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
         <source>Serial number</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="76"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>%1, revision %2</source>
         <translation>%1，版次 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
         <source>Recipe checksum</source>
         <translation>配方檢查碼</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <source>Attempt</source>
+        <translation>測試次數</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <source>%1 (tests of this serial under this recipe)</source>
+        <translation>第 %1 次（此序號在此配方下的測試）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <source>not counted (recorded before attempts were)</source>
+        <translation>未計次（記錄時尚未統計測試次數）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>Ended</source>
         <translation>結束時間</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>Record</source>
         <translation>記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="96"/>
         <source>First failure:</source>
         <translation>首個不合格項目：</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <source>This serial failed %n earlier test(s); they are listed below.</source>
+        <translation>
+            <numerusform>此序號先前有 %n 次測試不合格，列於下方。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Drives</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Variant</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="95"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Written</source>
         <translation>寫入值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="100"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
         <source>Read back</source>
         <translation>回讀值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="101"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
         <source>Verified</source>
         <translation>已驗證</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="105"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>already set</source>
         <translation>原已設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="106"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="108"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Measurements</source>
         <translation>量測值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Step</source>
         <translation>步驟</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Quantity</source>
         <translation>量測項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="110"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <source>Earlier tests of this serial</source>
+        <translation>此序號先前的測試</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <source>Reason</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="139"/>
+        <source>%1 rev. %2</source>
+        <translation>%1 版次 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後的匯流排通訊</translation>
     </message>
@@ -2596,7 +2647,7 @@ Drives: %5</source>
         <translation>終檢測試證書 %1</translation>
     </message>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="53"/>
+        <location filename="../report/CertificatePdf.cpp" line="54"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · 第 %3 頁，共 %4 頁</translation>
     </message>
@@ -2635,6 +2686,7 @@ group is checked before a write or command
 
 Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 (nothing written), 4 verification mismatch or a drive that did not stop,
+5 eol run FAIL, 6 eol run station error (no verdict on the unit),
 130 interrupted by Ctrl-C, SIGTERM or SIGHUP (what was done is reported).
 
 &quot;%1 help COMMAND&quot; shows a command&apos;s options.
@@ -2654,24 +2706,25 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 
 結束碼：0 成功，1 通訊失敗，2 用法錯誤，3 值或檔案無效
 (未寫入任何資料)，4 驗證不符或驅動器未停止，
+5 eol run 不合格，6 eol run 工站錯誤 (未對產品作出判定)，
 130 被 Ctrl-C、SIGTERM 或 SIGHUP 中斷 (會回報已完成的操作)。
 
 &quot;%1 help COMMAND&quot; 顯示指令的選項。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="167"/>
-        <location filename="../cli/CliApp.cpp" line="221"/>
+        <location filename="../cli/CliApp.cpp" line="168"/>
+        <location filename="../cli/CliApp.cpp" line="222"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>請執行 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="187"/>
+        <location filename="../cli/CliApp.cpp" line="188"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知指令 &quot;%2&quot;；可用指令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="195"/>
+        <location filename="../cli/CliApp.cpp" line="196"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2680,12 +2733,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="209"/>
+        <location filename="../cli/CliApp.cpp" line="210"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是此指令的選項；請參閱 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="220"/>
+        <location filename="../cli/CliApp.cpp" line="221"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -4715,7 +4768,7 @@ Configuration changes written but not stored are discarded.</source>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
         <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="137"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="142"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -4736,6 +4789,7 @@ Configuration changes written but not stored are discarded.</source>
     </message>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
@@ -4750,7 +4804,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="140"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="145"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>已寫入 %1：序號 %2，%3，記錄於 %4</translation>
     </message>
@@ -4807,122 +4861,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="73"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
         <source>no drive answers at machine number %1</source>
         <translation>機號 %1 沒有驅動器回應</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="74"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="77"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>無法識別機號 %1 的驅動器：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="91"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>為 %1 驅動器，配方需要 %2 驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
         <source>the drive does not report its variant and the recipe allows %1</source>
         <translation>驅動器不回報機型，而配方僅允許 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="96"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>variant %1, the recipe allows %2</source>
         <translation>機型為 %1，配方允許 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="102"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>韌體為 %1，配方允許 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="116"/>
         <source>no profile for the family %1</source>
         <translation>沒有 %1 系列的定義檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="141"/>
-        <source>cannot read whether the motor runs: %1</source>
-        <translation>無法讀取馬達是否運轉：%1</translation>
+        <location filename="../model/eol/EolDriveRun.cpp" line="162"/>
+        <source>cannot read whether the motor runs or an alarm is active: %1</source>
+        <translation>無法讀取馬達是否運轉中或是否有警報發生：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="149"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="163"/>
+        <source>no answer</source>
+        <translation>無回應</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="170"/>
         <source>its motor was running before the test</source>
         <translation>測試前馬達已在運轉</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="150"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="171"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>測試前馬達已在運轉 (先前中斷的測試所遺留？)；未寫入任何資料：請先停止馬達 (全部停止，或在驅動器上操作)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="160"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="178"/>
+        <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
+        <translation>測試前已有警報發生 (上一台產品遺留？)；未寫入任何資料：請重置警報後重新測試</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolDriveRun.cpp" line="188"/>
         <source>writing the settings</source>
         <translation>正在寫入設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="230"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="237"/>
         <source>writing the settings: %1</source>
         <translation>寫入設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="217"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="245"/>
         <source>reading every setting back</source>
         <translation>正在回讀所有設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="232"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="260"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 無法回讀：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 未保持其值：設定為 %2，讀取為 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="242"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
         <source>verifying the settings: %1</source>
         <translation>驗證設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="256"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="284"/>
         <source>arming the communication-loss stop</source>
         <translation>啟用通訊中斷停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="261"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="289"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="274"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="302"/>
         <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
         <translation>無法啟用通訊中斷停止（%1 = %2 s）：%3；沒有它不會啟動馬達</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="306"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="334"/>
         <source>testing</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="310"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="338"/>
         <source>step %1 of %2: %3</source>
         <translation>步驟 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="366"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="401"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -5357,262 +5421,298 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="65"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>列出結果資料庫中的產品、其一次良率，或匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="72"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>結果資料庫：SQLite 檔、sqlite:PATH 或 postgresql://user@host/db (預設：OPENTOP_EOL_DB，否則為 ~/.local/share/opentop/results.db)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="76"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results：只列出此序號；含 * 或 ? 時為不分大小寫的樣式（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="78"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results：於 T 或之後開始 (2026-11-24、2026-11-24T06:00、8h、2d、today)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: started before T.</source>
         <translation>results：於 T 之前開始。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
         <source>results: only this recipe (product name).</source>
         <translation>results：僅此配方 (產品名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
-        <source>results: pass, fail, interrupted, aborted or running.</source>
-        <translation>results：pass、fail、interrupted、aborted 或 running。</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only this station.</source>
         <translation>results：僅此工站。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>results: only the newest N units.</source>
         <translation>results：僅最新的 N 台產品。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results：以 CSV (RFC 4180) 輸出至標準輸出或 -o FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
-        <source>results: first-pass yield and failure reasons per recipe and per shift.</source>
-        <translation>results：各配方及各班別的一次良率與不合格原因。</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield：各班別的開始時間，以本地時間表示 (預設 06:00,14:00,22:00)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="126"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; 不是時間；請使用 2026-11-24、2026-11-24T06:00 (本地時間，或加上 Z 或 +01:00)、8h、2d、today 或 yesterday</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="136"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
         <source>--%1: %2</source>
         <translation>--%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="156"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 未早於 --until %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="162"/>
-        <source>--verdict &quot;%1&quot;: give pass, fail, interrupted, aborted or running</source>
-        <translation>--verdict &quot;%1&quot;：請使用 pass、fail、interrupted、aborted 或 running</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
+        <translation>results：僅此版本的配方 (以檢查碼指定，即 eol recipe check 顯示的值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="169"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
+        <source>SUM</source>
+        <translation>SUM</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
+        <translation>results：pass、fail、error (工站錯誤)、interrupted、aborted 或 running。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
+        <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
+        <translation>results：依配方版本及班別列出一次、二次及最終良率與不合格原因；工站錯誤與中止不計入良率。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
+        <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
+        <translation>--verdict &quot;%1&quot;：請指定 pass、fail、error、interrupted、aborted 或 running</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;：請指定 1 以上的產品台數</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="179"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="205"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="222"/>
         <source>no unit matches</source>
         <translation>沒有符合的產品</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
         <source>recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="182"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="183"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="191"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
         <source>shift</source>
         <translation>班別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>serials</source>
         <translation>序號數</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>first pass</source>
         <translation>一次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
-        <source>first-pass yield</source>
-        <translation>一次良率</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <source>second pass</source>
+        <translation>二次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="212"/>
-        <source>records</source>
-        <translation>記錄數</translation>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <source>last pass</source>
+        <translation>最終合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="213"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>passed</source>
+        <translation>合格</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>failed</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <source>station errors</source>
+        <translation>工站錯誤</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="250"/>
+        <source>Yield per recipe version (station errors and aborts are not counted)</source>
+        <translation>各配方版本的良率 (不計入工站錯誤與中止)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="258"/>
+        <source>%1: checksum %2</source>
+        <translation>%1：檢查碼 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>not finished</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
-        <source>First-pass yield per recipe</source>
-        <translation>各配方一次良率</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="259"/>
         <source>Per shift</source>
         <translation>各班別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="236"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
         <source>Failure reasons</source>
         <translation>不合格原因</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="257"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="274"/>
+        <source>Station errors (not counted in yield)</source>
+        <translation>工站錯誤 (不計入良率)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>wrote %1</source>
         <translation>已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>錯誤：非預期的引數 &quot;%1&quot;；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="272"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="306"/>
         <source>error: give --csv or --json, not both</source>
         <translation>錯誤：--csv 與 --json 只能擇一</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="310"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>錯誤：-o 指定的是 CSV 檔：請同時加上 --csv</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="281"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
         <source>error: --shifts is for --yield</source>
         <translation>錯誤：--shifts 僅用於 --yield</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="325"/>
         <source>error: --shifts %1: %2</source>
         <translation>錯誤：--shifts %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="311"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="343"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="369"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
@@ -5630,48 +5730,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>結果資料庫無法記錄此產品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="92"/>
+        <location filename="../model/eol/EolRun.cpp" line="94"/>
         <source>the recipe has no drives</source>
         <translation>配方中沒有驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="105"/>
+        <location filename="../model/eol/EolRun.cpp" line="107"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方無效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="110"/>
+        <location filename="../model/eol/EolRun.cpp" line="112"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：此產品沒有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="128"/>
+        <location filename="../model/eol/EolRun.cpp" line="130"/>
         <source>cancelled by the operator</source>
         <translation>已由作業員取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="137"/>
+        <location filename="../model/eol/EolRun.cpp" line="141"/>
         <source>the connection was lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="143"/>
-        <location filename="../model/eol/EolRun.cpp" line="150"/>
+        <location filename="../model/eol/EolRun.cpp" line="149"/>
+        <location filename="../model/eol/EolRun.cpp" line="157"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="147"/>
+        <location filename="../model/eol/EolRun.cpp" line="154"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="185"/>
+        <location filename="../model/eol/EolRun.cpp" line="194"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="194"/>
+        <location filename="../model/eol/EolRun.cpp" line="203"/>
         <source>recording the result</source>
         <translation>正在記錄結果</translation>
     </message>
@@ -5679,149 +5779,179 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="86"/>
+        <location filename="../cli/EolRunCommand.cpp" line="88"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="92"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
         <source>Who tests it (default: the login name).</source>
         <translation>測試人員 (預設：登入名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="93"/>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="131"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
+        <translation>由技術員許可配方規則不允許的重新測試 (已合格的序號，或測試次數已用完)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="141"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="154"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="164"/>
+        <location filename="../cli/EolRunCommand.cpp" line="169"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="190"/>
+        <location filename="../cli/EolRunCommand.cpp" line="195"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="194"/>
+        <location filename="../cli/EolRunCommand.cpp" line="199"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：單元 %1（開始於 %2）因工作站程序已結束而未完成，現已記錄為「中斷」。請確認其馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="199"/>
+        <location filename="../cli/EolRunCommand.cpp" line="204"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 筆結果尚未能送到結果資料庫</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="221"/>
+        <location filename="../cli/EolRunCommand.cpp" line="223"/>
+        <source>error: %1; nothing was sent</source>
+        <translation>錯誤：%1；未送出任何資料</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <source>a technician allows it with --retest</source>
+        <translation>技術員可使用 --retest 許可重新測試</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <source>note: %1; tested again as --retest allows</source>
+        <translation>注意：%1；依 --retest 的許可重新測試</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="231"/>
+        <source>note: %1</source>
+        <translation>注意：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="250"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <location filename="../cli/EolRunCommand.cpp" line="254"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驅動器未確認停止；未進行任何檢測</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="262"/>
-        <location filename="../cli/EolRunCommand.cpp" line="283"/>
+        <location filename="../cli/EolRunCommand.cpp" line="291"/>
+        <location filename="../cli/EolRunCommand.cpp" line="312"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="288"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="288"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="306"/>
+        <location filename="../cli/EolRunCommand.cpp" line="335"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="336"/>
+        <location filename="../cli/EolRunCommand.cpp" line="366"/>
         <source>rev. %1</source>
         <translation>版次 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="342"/>
+        <location filename="../cli/EolRunCommand.cpp" line="368"/>
+        <source>attempt %1</source>
+        <translation>第 %1 次測試</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果「未」記錄：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="344"/>
+        <location filename="../cli/EolRunCommand.cpp" line="377"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果資料庫沒有回應：結果已保存在本工作站（%1），下次工作站程式連上資料庫時會送出</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="349"/>
+        <location filename="../cli/EolRunCommand.cpp" line="382"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未確認馬達已停止：%1</translation>
     </message>
@@ -5853,78 +5983,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="172"/>
+        <location filename="../model/eol/EolStation.cpp" line="168"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="169"/>
+        <location filename="../model/eol/EolStation.cpp" line="165"/>
         <source>opening the results database</source>
         <translation>正在開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="171"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>無法連線（%1）；自動重試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="179"/>
+        <location filename="../model/eol/EolStation.cpp" line="176"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="183"/>
+        <location filename="../model/eol/EolStation.cpp" line="180"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="188"/>
+        <location filename="../model/eol/EolStation.cpp" line="185"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="195"/>
+        <location filename="../model/eol/EolStation.cpp" line="192"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在開啟結果資料庫；請稍後再試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="197"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="199"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="205"/>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="202"/>
+        <location filename="../model/eol/EolStation.cpp" line="246"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="209"/>
+        <location filename="../model/eol/EolStation.cpp" line="206"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驅動器確認安全後，單元 %1 會立即開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="213"/>
+        <location filename="../model/eol/EolStation.cpp" line="210"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="231"/>
+        <location filename="../model/eol/EolStation.cpp" line="228"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>工作站有驅動器不安全：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="288"/>
+        <location filename="../model/eol/EolStation.cpp" line="311"/>
+        <source>no unit was started yet</source>
+        <translation>尚未開始任何產品的測試</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="323"/>
         <source>cancelled before it started</source>
         <translation>開始前已取消</translation>
     </message>
@@ -9408,87 +9543,87 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="69"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
         <source>Operator:</source>
         <translation>作業員：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="94"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="96"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="95"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="97"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="120"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="127"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="182"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="193"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>READY</source>
         <translation>就緒</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="214"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -9497,197 +9632,210 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="254"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="269"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="261"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="268"/>
-        <source>Tested %1 · passed %2 · failed %3 · first-pass yield %4 %</source>
-        <translation>已測試 %1 · 合格 %2 · 不合格 %3 · 一次良率 %4 %</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序號 %1 未被接受：單元 %2 正在檢測中。請在其判定結果顯示後再掃描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="300"/>
         <source>another</source>
         <translation>另一個單元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="309"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="329"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="334"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>單元 %1：先使工作站的驅動器進入安全狀態…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="471"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="485"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驅動器進入安全狀態：逐一讀取、停止仍在運轉者、將控制權交還其輸入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="172"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="177"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="346"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="348"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="353"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
         <source>TESTING</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="374"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <source>Unit %1 — attempt %2</source>
+        <translation>產品 %1 — 第 %2 次</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="382"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="397"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="406"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="414"/>
         <source>NOT RECORDED</source>
         <translation>未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="436"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
-    <message numerus="yes">
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="457"/>
+        <source>STATION ERROR</source>
+        <translation>工站錯誤</translation>
+    </message>
+    <message>
         <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <source>%1
+Not a verdict on the unit: fix the cause and test it again.</source>
+        <translation>%1
+此結果並非產品判定：請排除原因後重新測試。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="476"/>
         <source>it does not answer</source>
         <translation>資料庫沒有回應</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="465"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="479"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="181"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="429"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="437"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="415"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="445"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="453"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="448"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="388"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="381"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10400,12 +10548,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="254"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大於配方檔上限 %2 MB；不是配方檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="270"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -10471,143 +10619,158 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>不是 OpenTOP 配方檔：JSON 不是物件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="70"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="72"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;：配方未指定驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="75"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="77"/>
         <source>%1: must be an object</source>
         <translation>%1：必須是物件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="92"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 配方檔 (&quot;format&quot; 為 &quot;%1&quot;，而非 &quot;%2&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 配方檔 (沒有 &quot;format&quot;: &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="99"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必須是 1 以上的整數</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>由較新版的 OpenTOP 寫入 (配方格式版本 %1)；此版本可讀取配方格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>配方沒有檢查碼 (&quot;checksum&quot;: &quot;sha256:…&quot;)；並非由 OpenTOP 寫入，或寫入後曾被修改</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="113"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>配方寫入後曾被修改 (檢查碼不符)；請以 OpenTOP 開啟並儲存，以接受此變更</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="130"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;machineNumber&quot; 必須是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="176"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="178"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2)：&quot;value&quot; 必須是數字或文字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="192"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="194"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2)：&quot;source&quot; 必須是 &quot;csv&quot; 或 &quot;operator&quot;，而非 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="205"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="207"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1：未知的步驟類型 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="219"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="221"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1：&quot;spno&quot; 必須是運轉資料編號，例如 2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="232"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="234"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1：&quot;direction&quot; 必須是 &quot;cw&quot; 或 &quot;ccw&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="276"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="278"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1：&quot;equals&quot; 與限值只能擇一</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="282"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="284"/>
         <source>%1: unknown step</source>
         <translation>%1：未知步驟</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="298"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="300"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1：&quot;unit&quot; 必須是文字 (無單位的值請用 &quot;&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="303"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1：限值需要 &quot;lower&quot;、&quot;upper&quot; 或兩者</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="309"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="312"/>
+        <source>&quot;retest&quot; must be an object</source>
+        <translation>&quot;retest&quot; 必須是物件</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="321"/>
+        <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
+        <translation>retest：&quot;maxAttempts&quot; 必須是 0 (不限) 到 100 的整數</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="331"/>
+        <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
+        <translation>retest：&quot;passedSerial&quot; 必須是 technician、refuse 或 allow，而非 &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeParser.cpp" line="343"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1：未知的鍵 &quot;%2&quot;；允許：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="323"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="357"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; 必須是非空的文字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="324"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; 必須是文字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="336"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1：&quot;%2&quot; 必須是文字清單</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="339"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="373"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1：&quot;%2&quot; 必須是非空文字的清單</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="349"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1：&quot;%2&quot; 必須是數字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="375"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="409"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; 必須是清單</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="378"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="412"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; 有 %3 個項目；最多允許 %4 個</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="418"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;：每個項目都必須是物件</translation>
     </message>
@@ -11992,7 +12155,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="142"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="152"/>
         <source>no unit record %1</source>
         <translation>沒有產品記錄 %1</translation>
     </message>
@@ -12000,20 +12163,25 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="151"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="200"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果資料庫的結構版本為 %1，比本程式支援的版本 (%2) 還新：請更新此工站的 OpenTOP；未寫入任何資料</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/ResultSchema.cpp" line="235"/>
+        <source>the migration left a record pointing at no unit (table %1)</source>
+        <translation>資料庫結構遷移後留下未對應任何產品的記錄 (資料表 %1)</translation>
     </message>
 </context>
 <context>
     <name>opentop::ResultSink</name>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="136"/>
+        <location filename="../model/eol/ResultSink.cpp" line="137"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSink.cpp" line="205"/>
+        <location filename="../model/eol/ResultSink.cpp" line="210"/>
         <source>the results database refuses unit %1 (serial %2): %3</source>
         <translation>結果資料庫拒絕單元 %1（序號 %2）：%3</translation>
     </message>
@@ -12050,22 +12218,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>產品需要序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="160"/>
-        <source>a unit is finished with pass, fail or aborted, not %1</source>
-        <translation>產品的結束判定須為 pass、fail 或 aborted，而非 %1</translation>
+        <location filename="../model/eol/ResultStore.cpp" line="178"/>
+        <source>a unit is finished with pass, fail, error or aborted, not %1</source>
+        <translation>產品只能以 pass、fail、error 或 aborted 結束，而非 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="190"/>
+        <location filename="../model/eol/ResultStore.cpp" line="208"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>產品 %1 (序號 %2) 從未在結果資料庫中開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="192"/>
+        <location filename="../model/eol/ResultStore.cpp" line="210"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>產品 %1 (序號 %2) 已記錄為 %3；保留其記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="210"/>
+        <location filename="../model/eol/ResultStore.cpp" line="233"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>產品 %1 (序號 %2) 在結果資料庫中並非測試中：從未開始，或已完成或已標記為中斷</translation>
     </message>
@@ -12073,32 +12241,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultUrl</name>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="44"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="45"/>
         <source>no database given: name a file or a postgresql:// URL</source>
         <translation>未指定資料庫：請指定檔案或 postgresql:// URL</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="52"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="53"/>
         <source>unknown database URL &quot;%1&quot;: use a file path, sqlite:PATH or postgresql://user@host/database</source>
         <translation>未知的資料庫 URL &quot;%1&quot;：請使用檔案路徑、sqlite:PATH 或 postgresql://user@host/database</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="56"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="57"/>
         <source>sqlite: needs a file path</source>
         <translation>sqlite: 需要檔案路徑</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="85"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="86"/>
         <source>the host in &quot;%1&quot; has no closing ]</source>
         <translation>&quot;%1&quot; 中的主機缺少結尾的 ]</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="113"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="114"/>
         <source>unknown connection option &quot;%1&quot; in the database URL; known: %2</source>
         <translation>資料庫 URL 中有未知的連線選項 &quot;%1&quot;；已知：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultUrl.cpp" line="136"/>
+        <location filename="../model/eol/ResultUrl.cpp" line="137"/>
         <source>the port &quot;%1&quot; in the database URL is not a number from 1 to 65535</source>
         <translation>資料庫 URL 中的連接埠 &quot;%1&quot; 不是 1 到 65535 的數字</translation>
     </message>
@@ -12272,91 +12440,113 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>正在搜尋…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="352"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="345"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="293"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="297"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="292"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="319"/>
-        <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
-            <numerusform>%n 台產品，%1 台合格 · 一次良率 %2 (%4 個序號中的 %3 個)</numerusform>
+            <numerusform>%n 台產品：合格 %1、不合格 %2、工站錯誤 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="322"/>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="379"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
         <source>no unit is selected</source>
         <translation>未選擇產品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="337"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="324"/>
         <source>Reading unit %1…</source>
         <translation>正在讀取產品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="380"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="374"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在讀取該產品的記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="389"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
         <source>Open results database</source>
         <translation>開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="390"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="384"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 資料庫 (*.db *.sqlite);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
         <source>Export units as CSV</source>
         <translation>將產品匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="400"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="405"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="399"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已將 %n 台產品寫入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
         <source>Save certificate</source>
         <translation>儲存測試證書</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="417"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="411"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 檔 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="422"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
         <source>Certificate written to %1</source>
         <translation>測試證書已寫入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RetestPolicy</name>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="20"/>
+        <source>serial %1 has passed already; this recipe never tests a passed unit again</source>
+        <translation>序號 %1 已合格；此配方不會再次測試已合格的產品</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="23"/>
+        <source>serial %1 has passed already; testing it again needs a technician</source>
+        <translation>序號 %1 已合格；須由技術員許可才能重新測試</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="29"/>
+        <source>serial %1 was tested %2 times under this recipe, its limit; another attempt needs a technician</source>
+        <translation>序號 %1 在此配方下已測試 %2 次，已達上限；再次測試須由技術員許可</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="50"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RetestPolicy.cpp" line="58"/>
+        <source>earlier tests of %1 were not checked (%2): the result is kept in the station&apos;s spool</source>
+        <translation>未能檢查 %1 先前的測試記錄（%2）：結果會保存在工站暫存檔中</translation>
     </message>
 </context>
 <context>
@@ -14220,6 +14410,101 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
 </context>
 <context>
+    <name>opentop::StationActions</name>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="19"/>
+        <source>Reset alarm and test again</source>
+        <translation>重置警報並重新測試</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="20"/>
+        <source>Technician: test again…</source>
+        <translation>技術員：重新測試…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="50"/>
+        <source>Resetting the alarm of machine number %1…</source>
+        <translation>正在重置機號 %1 的警報…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="59"/>
+        <source>The alarm is not cleared; nothing was started:
+%1</source>
+        <translation>警報未解除；未開始任何測試：
+%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="84"/>
+        <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
+        <translation>測試前機號 %1 已有警報發生：未寫入任何資料。請重置警報（使用驅動器本身的重置功能；需要斷電重新上電的警報會另行提示），產品即會重新測試。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="97"/>
+        <source>(no name)</source>
+        <translation>（未填姓名）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="99"/>
+        <source>Test again</source>
+        <translation>重新測試</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="100"/>
+        <source>%1
+
+Test unit %2 again? It is recorded as allowed by %3.</source>
+        <translation>%1
+
+要重新測試產品 %2 嗎？將記錄為由 %3 許可。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationAlarmReset</name>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="55"/>
+        <source>machine number %1: not connected to a bus</source>
+        <translation>機號 %1：未連線至匯流排</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
+        <source>machine number %1 is not a position of the recipe</source>
+        <translation>機號 %1 不是配方中的位置</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="65"/>
+        <source>machine number %1: %2 drives have no alarm reset command; switch the drive off and on</source>
+        <translation>機號 %1：%2 驅動器沒有警報重置指令；請將驅動器斷電再重新上電</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="75"/>
+        <source>machine number %1: %2</source>
+        <translation>機號 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationFigures</name>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="25"/>
+        <source>This shift: no figures yet (%1)</source>
+        <translation>本班別：尚無數據（%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="26"/>
+        <source>results database not read</source>
+        <translation>尚未讀取結果資料庫</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="29"/>
+        <source>This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5</source>
+        <translation>本班別：已測 %1 · 合格 %2 · 不合格 %3 · 工站錯誤 %4 · %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationFigures.cpp" line="35"/>
+        <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
+        <translation>本工站、此配方版本，自 %1 起（讀取於 %2）。以指令查看相同數據：%3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationSafeState</name>
     <message>
         <location filename="../model/eol/StationSafeState.cpp" line="28"/>
@@ -14285,6 +14570,14 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <location filename="../model/eol/StationSafeState.cpp" line="224"/>
         <source>control could not be given back to its inputs: %1</source>
         <translation>無法將控制權交還其輸入端子：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationYield</name>
+    <message>
+        <location filename="../model/eol/StationYield.cpp" line="48"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
     </message>
 </context>
 <context>
@@ -16758,27 +17051,27 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="105"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="106"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>不是產品記錄 (format 不是 &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="108"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="109"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>本程式不認得產品記錄版本 %1 (最多可讀取 %2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
         <source>the unit record has no serial number</source>
         <translation>產品記錄沒有序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="127"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="128"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>未知的產品狀態 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="171"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="173"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
     </message>
@@ -17088,22 +17381,47 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::YieldReport</name>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="51"/>
+        <location filename="../model/eol/YieldReport.cpp" line="100"/>
+        <source>%1 rev. %2</source>
+        <translation>%1 版次 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="105"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="111"/>
+        <source>first-pass yield – (no serial tested yet)</source>
+        <translation>一次良率 –（尚未測試任何序號）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="112"/>
+        <source>first-pass yield %1 (%2 of %3 serials) · second-pass %4 · last-pass %5</source>
+        <translation>一次良率 %1（%3 個序號中 %2 個）· 二次良率 %4 · 最終良率 %5</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="125"/>
         <source>still running (or its station has not restarted since it stopped)</source>
         <translation>仍在執行中 (或其工站停止後尚未重新啟動)</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="53"/>
+        <location filename="../model/eol/YieldReport.cpp" line="127"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="55"/>
+        <location filename="../model/eol/YieldReport.cpp" line="129"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../model/eol/YieldReport.cpp" line="57"/>
+        <location filename="../model/eol/YieldReport.cpp" line="131"/>
+        <source>station error, no reason recorded</source>
+        <translation>工站錯誤，未記錄原因</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/YieldReport.cpp" line="133"/>
         <source>failed, no reason recorded</source>
         <translation>不合格，未記錄原因</translation>
     </message>

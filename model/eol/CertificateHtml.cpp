@@ -46,6 +46,8 @@ QString CertificateHtml::verdictText(UnitStatus status)
         return tr("FAIL");
     case UnitStatus::Aborted:
         return tr("ABORTED");
+    case UnitStatus::Error:
+        return tr("STATION ERROR");
     case UnitStatus::Interrupted:
         return tr("INTERRUPTED");
     case UnitStatus::Running:
@@ -65,7 +67,7 @@ QString CertificateHtml::limitsText(const Measurement& m)
     return tr("none");
 }
 
-QString CertificateHtml::html(const UnitRecord& r)
+QString CertificateHtml::html(const UnitRecord& r, const QVector<UnitRecord>& earlier)
 {
     const QString colour = r.isPass() ? QStringLiteral("#1b7e2b") : QStringLiteral("#b3261e");
     QString h = QStringLiteral("<html><body style=\"font-family: 'DejaVu Sans'; font-size: 9pt\">");
@@ -77,6 +79,9 @@ QString CertificateHtml::html(const UnitRecord& r)
         {tr("Recipe checksum"), r.recipeChecksum},
         {tr("Station"), r.station},
         {tr("Operator"), r.operatorName},
+        {tr("Attempt"), r.attempt > 0
+                            ? tr("%1 (tests of this serial under this recipe)").arg(r.attempt)
+                            : tr("not counted (recorded before attempts were)")},
         {tr("Started"), timeText(r.started)},
         {tr("Ended"), timeText(r.ended)},
         {tr("Record"), r.id},
@@ -89,35 +94,64 @@ QString CertificateHtml::html(const UnitRecord& r)
     if (!r.failureReason.isEmpty())
         h += QStringLiteral("<p><b>%1</b> %2</p>")
                  .arg(esc(tr("First failure:")), esc(r.failureReason));
-    const QString table =
-        QStringLiteral("<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" width=\"100%\">");
-    h += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Drives")));
-    h += table + row({tr("Machine number"), tr("Model"), tr("Variant"), tr("Firmware")}, true);
+    // A heading is the first row of its table's repeated header: never alone at the foot of
+    // a page, and every continued page says what its rows are.
+    const auto section = [&h](const QString& title, const QStringList& headers) {
+        h += QStringLiteral("<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" "
+                            "width=\"100%\"><thead><tr><td colspan=\"%1\" style=\"border: "
+                            "none; font-size: 11pt; font-weight: bold; padding-top: 8px\">%2"
+                            "</td></tr>")
+                 .arg(headers.size())
+                 .arg(esc(title));
+        h += row(headers, true) + QStringLiteral("</thead>");
+    };
+    if (!earlier.isEmpty()) {
+        int fails = 0;
+        for (const UnitRecord& e : earlier)
+            fails += e.status == UnitStatus::Fail ? 1 : 0;
+        if (fails > 0)
+            h += QStringLiteral("<p><b>%1</b></p>")
+                     .arg(esc(tr("This serial failed %n earlier test(s); they are listed below.",
+                                 nullptr, fails)));
+    }
+    section(tr("Drives"), {tr("Machine number"), tr("Model"), tr("Variant"), tr("Firmware")});
     for (const UnitDrive& d : r.drives)
         h += row({QString::number(d.machineNumber), d.model, d.variant, d.firmware});
     h += QStringLiteral("</table>");
-    h += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Settings")));
-    h += table + row({tr("Drive"), tr("Setting"), tr("Value"), tr("Written"), tr("Read back"),
-                      tr("Verified")},
-                     true);
+    section(tr("Settings"), {tr("Drive"), tr("Setting"), tr("Value"), tr("Written"),
+                             tr("Read back"), tr("Verified")});
     for (const WrittenValue& w : r.writtenValues)
         h += row({QString::number(w.machineNumber), w.label, w.value,
                   w.written ? tr("written") : tr("already set"), w.readBack,
                   w.verified ? tr("yes") : tr("NO")});
     h += QStringLiteral("</table>");
-    h += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Measurements")));
-    h += table +
-         row({tr("Drive"), tr("Step"), tr("Quantity"), tr("Value"), tr("Limits"), tr("Verdict")},
-             true);
+    section(tr("Measurements"),
+            {tr("Drive"), tr("Step"), tr("Quantity"), tr("Value"), tr("Limits"), tr("Verdict")});
     for (const Measurement& m : r.measurements)
         h += row({QString::number(m.machineNumber), m.step, m.quantity,
                   withUnit(num(m.value), m.unit), limitsText(m), m.pass ? tr("pass") : tr("FAIL")});
     h += QStringLiteral("</table>");
+    if (!earlier.isEmpty()) {
+        section(tr("Earlier tests of this serial"),
+                {tr("Started"), tr("Recipe"), tr("Attempt"), tr("Verdict"), tr("Reason")});
+        for (const UnitRecord& e : earlier)
+            h += row({timeText(e.started), tr("%1 rev. %2").arg(e.recipeName, e.recipeRevision),
+                      e.attempt > 0 ? QString::number(e.attempt) : tr("–"), verdictText(e.status),
+                      e.failureReason});
+        h += QStringLiteral("</table>");
+    }
     if (!r.traffic.isEmpty()) {
-        h += QStringLiteral("<h3>%1</h3><pre style=\"font-size: 7pt\">")
+        // A line a row (pre-wrap): a long line wraps at the page margin instead of running past
+        // it, and the heading stays with the first line.
+        h += QStringLiteral("<table cellspacing=\"0\" cellpadding=\"1\" width=\"100%\"><thead>"
+                            "<tr><td style=\"font-size: 11pt; font-weight: bold; padding-top: "
+                            "8px\">%1</td></tr></thead>")
                  .arg(esc(tr("Bus traffic around the failure")));
-        h += esc(r.traffic.join(QLatin1Char('\n')));
-        h += QStringLiteral("</pre>");
+        for (const QString& line : r.traffic)
+            h += QStringLiteral("<tr><td style=\"font-family: 'DejaVu Sans Mono'; font-size: 7pt; "
+                                "white-space: pre-wrap\">%1</td></tr>")
+                     .arg(esc(line));
+        h += QStringLiteral("</table>");
     }
     h += QStringLiteral("</body></html>");
     return h;

@@ -14,7 +14,9 @@ class CertificateHtml
 {
     Q_DECLARE_TR_FUNCTIONS(opentop::CertificateHtml)
 public:
-    static QString html(const UnitRecord& record);
+    // `earlier`: the serial's records before this one (own rows: verdict, time, reason), listed
+    // so that a PASS never hides the FAILs before it.
+    static QString html(const UnitRecord& record, const QVector<UnitRecord>& earlier = {});
     static QString verdictText(UnitStatus status);   // "PASS", "FAIL", ...
     static QString limitsText(const Measurement& m); // "1450 … 1550 r/min", "≤ 2.5 A"
 };

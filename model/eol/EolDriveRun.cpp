@@ -69,12 +69,18 @@ void EolDriveRun::start(std::function<void()> done)
 void EolDriveRun::identified(const DeviceInfo& info)
 {
     if (info.state != DeviceInfo::State::Present) {
-        fail(info.state == DeviceInfo::State::Absent
-                 ? tr("no drive answers at machine number %1").arg(m_position.machineNumber)
-                 : tr("the drive at machine number %1 is not identified: %2")
-                       .arg(m_position.machineNumber)
-                       .arg(info.detail.isEmpty() ? DeviceInfo::stateText(info.state)
-                                                  : info.detail));
+        // Silence or a garbled bus is the station's (cable, fixture, power), not the unit's;
+        // a drive that answers as something else is the unit's.
+        const QString why =
+            info.state == DeviceInfo::State::Absent
+                ? tr("no drive answers at machine number %1").arg(m_position.machineNumber)
+                : tr("the drive at machine number %1 is not identified: %2")
+                      .arg(m_position.machineNumber)
+                      .arg(info.detail.isEmpty() ? DeviceInfo::stateText(info.state) : info.detail);
+        if (info.state == DeviceInfo::State::Unidentified)
+            fail(why);
+        else
+            failStation(why);
         return;
     }
     m_drive.model = info.model;
@@ -127,28 +133,49 @@ void EolDriveRun::identified(const DeviceInfo& info)
 void EolDriveRun::checkStopped()
 {
     // A motor still turning (left by a station that was killed mid-test, or started at the
-    // drive) is not this run's to stop: nothing is written or started, and the operator is told.
-    const ParameterMeta* running =
-        RoleEvaluator::parameter(m_session->profile(), QStringLiteral("running"));
-    if (!running) {
+    // drive) is not this run's to stop, and an alarm latched before the test (the last unit
+    // stalled) is no fault of this unit: nothing is written or started, the station is told.
+    const Profile& profile = m_session->profile();
+    const ParameterMeta* running = RoleEvaluator::parameter(profile, QStringLiteral("running"));
+    const ParameterMeta* alarm = RoleEvaluator::parameter(profile, QStringLiteral("alarmActive"));
+    QStringList names;
+    for (const ParameterMeta* meta : {running, alarm})
+        if (meta && !names.contains(meta->name))
+            names << meta->name;
+    if (names.isEmpty()) {
         write();
         return;
     }
-    m_session->read(running->name, [this](const DeviceSession::Outcome& r) {
+    m_session->readMany(names, [this, running, alarm](const DeviceSession::ReadManyOutcome& r) {
         if (m_ended)
             return;
-        if (!r.ok) {
-            fail(tr("cannot read whether the motor runs: %1").arg(r.error));
-            return;
+        const auto value = [&r](const QString& name) -> std::optional<double> {
+            const auto it = r.results.constFind(name);
+            if (it == r.results.cend() || !it->ok)
+                return std::nullopt;
+            return double(it->value.raw);
+        };
+        for (const ParameterMeta* meta : {running, alarm}) {
+            const auto it = meta ? r.results.constFind(meta->name) : r.results.cend();
+            if (meta && (it == r.results.cend() || !it->ok)) {
+                failStation(tr("cannot read whether the motor runs or an alarm is active: %1")
+                                .arg(it == r.results.cend() ? tr("no answer") : it->error));
+                return;
+            }
         }
-        const std::optional<bool> turning = RoleEvaluator::flag(
-            m_session->profile(), QStringLiteral("running"),
-            [&r](const QString&) { return std::optional<double>(r.value.raw); });
-        if (turning.value_or(false)) {
+        const Profile& p = m_session->profile();
+        if (RoleEvaluator::flag(p, QStringLiteral("running"), value).value_or(false)) {
             m_stopConfirmed = false;
             m_stopDetail = tr("its motor was running before the test");
-            fail(tr("the motor is already running before the test (left by an interrupted run?); "
-                    "nothing was written: stop it first (STOP ALL, or at the drive)"));
+            failStation(tr("the motor is already running before the test (left by an interrupted "
+                           "run?); nothing was written: stop it first (STOP ALL, or at the "
+                           "drive)"));
+            return;
+        }
+        if (RoleEvaluator::flag(p, QStringLiteral("alarmActive"), value).value_or(false)) {
+            m_alarmLatched = true;
+            failStation(tr("an alarm is active before the test (left by the last unit?); "
+                           "nothing was written: reset the alarm and test again"));
             return;
         }
         write();
@@ -345,6 +372,13 @@ void EolDriveRun::abort(const QString& reason)
             m_failure = reason;
         return;
     }
+    fail(reason);
+}
+
+void EolDriveRun::failStation(const QString& reason)
+{
+    if (!m_ended && m_failure.isEmpty())
+        m_stationError = true;
     fail(reason);
 }
 

@@ -53,6 +53,11 @@ public:
     Phase phase() const { return m_phase; }
     bool ok() const { return m_ok; }
     QString failure() const { return m_failure; }
+    // The failure is the station's, not the unit's (no answer, a motor already turning, an
+    // alarm latched before anything was written): no verdict on the unit.
+    bool stationError() const { return m_stationError; }
+    // An alarm was active before the test: a reset may let the unit be tested again.
+    bool alarmLatched() const { return m_alarmLatched; }
     bool stopConfirmed() const { return m_stopConfirmed; }
     QString stopDetail() const { return m_stopDetail; }
     const UnitDrive& drive() const { return m_drive; }
@@ -75,6 +80,7 @@ private:
     void disarmCommLoss(std::function<void()> then);
     void setPhase(Phase phase, const QString& text);
     void fail(const QString& reason);
+    void failStation(const QString& reason);
     void finish();
 
     ModbusClient* m_client;
@@ -89,6 +95,8 @@ private:
     bool m_ok = false;
     bool m_ended = false;
     QString m_failure;
+    bool m_stationError = false;
+    bool m_alarmLatched = false;
     bool m_stopConfirmed = true;
     QString m_stopDetail;
     UnitDrive m_drive;

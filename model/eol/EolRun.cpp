@@ -62,11 +62,13 @@ void EolRun::start(Done done)
                 m_firstFailure =
                     tr("the results database cannot record the unit: %1").arg(saved.error);
                 m_cancelled = true;
+                m_stationError = true;
                 finish();
                 return;
             }
             m_record.id = begun.id;
             m_record.started = begun.started;
+            m_record.attempt = begun.attempt; // 0 while it waits in the spool
             emit recording(QString());
             if (m_cancelled) // while it was being recorded: nothing was sent
                 finish();
@@ -134,13 +136,18 @@ void EolRun::cancel(const QString& reason)
 
 void EolRun::connectionLost(const QString& error)
 {
+    if (m_firstFailure.isEmpty())
+        m_stationError = true; // the station's port, not the unit
     cancel(tr("the connection was lost: %1").arg(error));
 }
 
 void EolRun::driveDone(EolDriveRun* drive)
 {
+    if (drive->alarmLatched())
+        m_latchedAlarms << drive->machineNumber();
     if (!drive->ok() && m_firstFailure.isEmpty()) {
         m_firstFailure = tr("%1: %2").arg(drive->title(), drive->failure());
+        m_stationError = drive->stationError();
         // One failed drive fails the unit: the others end now, their motors stopped.
         for (EolDriveRun* other : m_drives)
             if (other != drive)
@@ -177,7 +184,9 @@ void EolRun::finish()
     if (m_firstFailure.isEmpty()) {
         m_record.status = UnitStatus::Pass;
     } else {
-        m_record.status = m_cancelled ? UnitStatus::Aborted : UnitStatus::Fail;
+        m_record.status = m_stationError ? UnitStatus::Error
+                          : m_cancelled  ? UnitStatus::Aborted
+                                         : UnitStatus::Fail;
         m_record.failureReason = m_firstFailure;
         if (!m_unconfirmed.isEmpty())
             m_record.failureReason +=

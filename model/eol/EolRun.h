@@ -63,6 +63,8 @@ public:
     // Drives whose motor may still be turning after the run (not confirmed stopped).
     QStringList unconfirmedStops() const { return m_unconfirmed; }
     qint64 elapsedMs() const { return m_elapsed.elapsed(); }
+    // Machine numbers whose alarm was active before the test (a reset may let it run again).
+    QVector<int> latchedAlarms() const { return m_latchedAlarms; }
 
 signals:
     void phaseChanged(int machineNumber, opentop::EolDriveRun::Phase phase, const QString& text);
@@ -91,6 +93,8 @@ private:
     int m_remaining = 0;
     QString m_firstFailure;
     bool m_cancelled = false;
+    bool m_stationError = false; // the first failure is the station's (UnitStatus::Error)
+    QVector<int> m_latchedAlarms;
     bool m_recording = false; // the record is being completed: the unit's work is over
     QStringList m_unconfirmed;
     UnitRecord m_record;

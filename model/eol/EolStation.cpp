@@ -5,6 +5,9 @@
 #include "eol/RecipeFile.h"
 #include "eol/ResultUrl.h"
 #include "eol/ResultWriter.h"
+#include "eol/RetestPolicy.h"
+#include "eol/StationAlarmReset.h"
+#include "eol/StationYield.h"
 #include "eol/UnitValuesCsv.h"
 #include "profile/ProfileRegistry.h"
 
@@ -24,11 +27,15 @@ EolStation::EolStation(QObject* parent)
     : QObject(parent)
     , m_writer(std::make_unique<ResultWriter>())
     , m_station(QSysInfo::machineHostName())
+    , m_yield(new StationYield(m_writer.get(), this))
 {
+
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &EolStation::retryUnsavedNow);
     connect(m_writer.get(), &ResultWriter::waitingChanged, this,
             &EolStation::resultsWaitingChanged);
+    // Results sent from the spool are in the database now: the figures count them.
+    connect(m_writer.get(), &ResultWriter::waitingChanged, this, [this] { refreshYield(); });
     m_openRetry.setSingleShot(true);
     connect(&m_openRetry, &QTimer::timeout, this, [this] {
         if (!m_writer->isOpen() && !m_writer->isOpening())
@@ -65,6 +72,8 @@ bool EolStation::loadRecipe(const QString& path, QStringList* problems)
     m_hasRecipe = true;
     m_safe = false; // its positions are made safe before its first unit
     m_csv.reset();
+    m_latchedAlarms.clear();
+    refreshYield();
     return true;
 }
 
@@ -87,54 +96,43 @@ QVector<QPair<int, RecipeUnitValue>> EolStation::operatorValues() const
     return values;
 }
 
-namespace {
-
-QString databaseLocation(const QString& url)
-{
-    QString where = url;
-    if (where.isEmpty())
-        where = qEnvironmentVariable("OPENTOP_EOL_DB");
-    if (where.isEmpty()) {
-        where = ResultUrl::defaultLocation();
-        QDir().mkpath(QFileInfo(where).absolutePath());
-    }
-    return where;
-}
-
-} // namespace
-
 void EolStation::openDatabase(const QString& url)
 {
     m_dbUrl = url;
     m_openRetry.stop();
-    m_writer->open(databaseLocation(url), m_station, this, [this](const ResultWriter::Opened& o) {
-        if (o.ok) {
-            m_dbError.clear();
-            m_openDelayS = 2;
-            if (!o.interrupted.isEmpty()) {
-                m_interrupted = o.interrupted;
-                emit interruptedFound(o.interrupted);
-            }
-        } else {
-            // The screen says so and the station tries again: a line does not wait for someone
-            // to restart it when the server is back.
-            m_dbError = o.error;
-            m_openRetry.start(m_openDelayS * 1000);
-            m_openDelayS = std::min(30, m_openDelayS * 2);
-        }
-        emit databaseOpened(o.ok, o.error);
-    });
+    m_writer->open(ResultUrl::stationLocation(url), m_station, this,
+                   [this](const ResultWriter::Opened& o) {
+                       if (o.ok) {
+                           m_dbError.clear();
+                           m_openDelayS = 2;
+                           refreshYield();
+                           if (!o.interrupted.isEmpty()) {
+                               m_interrupted = o.interrupted;
+                               emit interruptedFound(o.interrupted);
+                           }
+                       } else {
+                           // The screen says so and the station tries again: a line does not wait
+                           // for someone to restart it when the server is back.
+                           m_dbError = o.error;
+                           m_openRetry.start(m_openDelayS * 1000);
+                           m_openDelayS = std::min(30, m_openDelayS * 2);
+                       }
+                       emit databaseOpened(o.ok, o.error);
+                   });
 }
 
 bool EolStation::openDatabaseAndWait(const QString& url, QString* error)
 {
-    const ResultWriter::Opened o = m_writer->openAndWait(databaseLocation(url), m_station);
+    const ResultWriter::Opened o =
+        m_writer->openAndWait(ResultUrl::stationLocation(url), m_station);
     if (!o.ok && error)
         *error = o.error;
     if (o.ok && !o.interrupted.isEmpty()) {
         m_interrupted = o.interrupted;
         emit interruptedFound(o.interrupted);
     }
+    if (o.ok)
+        refreshYield();
     return o.ok;
 }
 
@@ -173,7 +171,8 @@ QString EolStation::databaseText() const
 }
 
 bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
-                       const QHash<int, QHash<QString, double>>& typed, QString* error)
+                       const QHash<int, QHash<QString, double>>& typed, QString* error,
+                       const QString& retestBy)
 {
     if (isRunning()) {
         *error = tr("a unit is being tested");
@@ -238,25 +237,52 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         for (const UnitValuesCsv::Value& v : *values)
             options.unitValues[v.machineNumber][v.parameter] = v.value;
     }
-    if (!m_safe || m_safeState) {
-        // First the positions are made safe (a station killed mid-test may have left a motor
-        // turning); the unit starts by itself once they are, or startRefused() says why not.
-        m_pendingSerial = options.serial;
-        m_pendingStart = [this, client = QPointer<ModbusClient>(client), traffic, options] {
-            QString why;
-            if (!client)
-                why = tr("not connected to a bus");
-            else if (!m_safe)
-                why = tr("a drive of the station is not safe: %1").arg(unsafeText());
-            else
-                begin(client, traffic, options);
-            if (!why.isEmpty())
-                emit startRefused(options.serial, why);
-        };
-        makeSafe(client);
-        return true;
-    }
-    begin(client, traffic, options);
+    // First the serial's earlier tests are checked against the recipe's retest rules, then the
+    // positions are made safe (a station killed mid-test may have left a motor turning); the
+    // unit starts by itself once both allow it, or startRefused() / retestNeedsTechnician()
+    // say why not.
+    m_pendingSerial = options.serial;
+    m_pendingStart = [this, client = QPointer<ModbusClient>(client), traffic, options] {
+        QString why;
+        if (!client)
+            why = tr("not connected to a bus");
+        else if (!m_safe)
+            why = tr("a drive of the station is not safe: %1").arg(unsafeText());
+        else
+            begin(client, traffic, options);
+        if (!why.isEmpty())
+            emit startRefused(options.serial, why);
+    };
+    m_lastStart = {options.serial, typed, traffic};
+    const quint64 token = ++m_startToken;
+    RetestPolicy::check(m_writer.get(), m_recipe.retest, options.serial, m_checksum, this,
+                        [this, token, retestBy,
+                         client = QPointer<ModbusClient>(client)](const RetestPolicy::Decision& d) {
+                            if (token != m_startToken || !m_pendingStart)
+                                return; // cancelled meanwhile
+                            m_decision = d;
+                            const bool allowed =
+                                d.kind == RetestPolicy::Decision::Kind::Allowed ||
+                                (d.kind == RetestPolicy::Decision::Kind::NeedsTechnician &&
+                                 !retestBy.isEmpty());
+                            if (!allowed) {
+                                m_pendingStart = nullptr;
+                                const QString held = std::exchange(m_pendingSerial, QString());
+                                if (d.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
+                                    emit retestNeedsTechnician(held, d.reason);
+                                else
+                                    emit startRefused(held, d.reason);
+                                return;
+                            }
+                            if (d.kind != RetestPolicy::Decision::Kind::Allowed)
+                                emit retestAllowed(m_lastStart.serial, d.reason, retestBy);
+                            if (m_safe && !m_safeState) {
+                                m_pendingSerial.clear();
+                                std::exchange(m_pendingStart, nullptr)();
+                            } else {
+                                makeSafe(client);
+                            }
+                        });
     return true;
 }
 
@@ -280,10 +306,21 @@ void EolStation::begin(ModbusClient* client, TrafficLog* traffic, const EolRun::
     m_run->start([this](const UnitRecord& record) { finished(record); });
 }
 
+bool EolStation::startAgain(ModbusClient* client, const QString& retestBy, QString* error)
+{
+    const LastStart last = m_lastStart;
+    if (last.serial.isEmpty()) {
+        *error = tr("no unit was started yet");
+        return false;
+    }
+    return start(client, last.traffic, last.serial, last.typed, error, retestBy);
+}
+
 void EolStation::cancel(const QString& reason)
 {
     if (m_pendingStart) { // nothing was sent for it yet
         m_pendingStart = nullptr;
+        ++m_startToken;
         emit startRefused(std::exchange(m_pendingSerial, QString()),
                           reason.isEmpty() ? tr("cancelled before it started") : reason);
         return;
@@ -303,7 +340,9 @@ void EolStation::finished(const UnitRecord& record)
 {
     // A unit that did not end cleanly may have left a motor turning or a drive in communication
     // priority: checked again at once, before the next unit.
-    if (record.status == UnitStatus::Aborted || (m_run && !m_run->unconfirmedStops().isEmpty())) {
+    m_latchedAlarms = m_run ? m_run->latchedAlarms() : QVector<int>();
+    if (record.status == UnitStatus::Aborted || record.status == UnitStatus::Error ||
+        (m_run && !m_run->unconfirmedStops().isEmpty())) {
         m_safe = false;
         QTimer::singleShot(0, this, [this] {
             if (m_client)
@@ -328,17 +367,43 @@ void EolStation::finished(const UnitRecord& record)
     emit unitFinished(record);
 }
 
-void EolStation::count(const UnitRecord& record)
+void EolStation::count(const UnitRecord&)
 {
-    if (record.status == UnitStatus::Pass || record.status == UnitStatus::Fail) {
-        ++m_counters.tested;
-        record.isPass() ? ++m_counters.passed : ++m_counters.failed;
-        if (!m_firstResult.contains(record.serial)) {
-            m_firstResult.insert(record.serial, record.isPass());
-            ++m_counters.firstTested;
-            m_counters.firstPassed += record.isPass() ? 1 : 0;
-        }
-    }
+    // The screen's figures are read back from the database (StationYield): what it holds, the
+    // same as `eol results --yield`, a restart included.
+    refreshYield();
+}
+
+void EolStation::refreshYield()
+{
+    if (m_hasRecipe && m_writer->isOpen())
+        m_yield->refresh(m_station, m_checksum);
+}
+
+void EolStation::resetAlarmsAndRetry(ModbusClient* client)
+{
+    if (m_latchedAlarms.isEmpty() || m_alarmReset || isRunning() || m_pendingStart || !client)
+        return;
+    m_alarmReset = new StationAlarmReset(client, ProfileRegistry::builtIn(), m_recipe, this);
+    emit alarmResetStarted(m_latchedAlarms);
+    m_alarmReset->reset(m_latchedAlarms, [this, client = QPointer<ModbusClient>(client)](
+                                             const QVector<StationAlarmReset::Result>& results) {
+        m_alarmReset->deleteLater();
+        m_alarmReset = nullptr;
+        QStringList texts;
+        for (const StationAlarmReset::Result& r : results)
+            texts << r.text;
+        const bool cleared = StationAlarmReset::allCleared(results);
+        if (cleared)
+            m_latchedAlarms.clear();
+        emit alarmResetFinished(cleared, texts);
+        if (!cleared || !client)
+            return;
+        // The same unit again: its serial and typed values as the operator gave them.
+        QString error;
+        if (!startAgain(client, QString(), &error))
+            emit startRefused(m_lastStart.serial, error);
+    });
 }
 
 int EolStation::nextRetrySeconds() const

@@ -2,6 +2,8 @@
 
 #include "eol/EolRun.h"
 #include "eol/Recipe.h"
+#include "eol/RetestPolicy.h"
+#include "eol/StationAlarmReset.h"
 #include "eol/StationLease.h"
 #include "eol/StationSafeState.h"
 #include "eol/UnitRecord.h"
@@ -18,6 +20,7 @@ namespace opentop {
 
 class ModbusClient;
 class ResultWriter;
+class StationYield;
 class TrafficLog;
 class UnitValuesCsv;
 
@@ -28,19 +31,6 @@ class EolStation : public QObject
 {
     Q_OBJECT
 public:
-    struct Counters
-    {
-        int tested = 0; // units with a verdict (pass or fail) since the station started
-        int passed = 0;
-        int failed = 0;
-        int firstTested = 0; // distinct serials
-        int firstPassed = 0; // ... whose first test passed
-        double firstPassYield() const
-        {
-            return firstTested ? 100.0 * firstPassed / firstTested : 0;
-        }
-    };
-
     explicit EolStation(QObject* parent = nullptr);
     ~EolStation() override;
 
@@ -82,8 +72,16 @@ public:
     // value missing or not allowed, or a unit already running. `typed`: the operator's values.
     // When the positions were not made safe yet, that is done first and the unit starts once it
     // is (unitStarted), or startRefused() says why it did not.
+    // First the recipe's retest rules are checked on the serial's recorded verdicts
+    // (RetestPolicy): a retest that needs a technician starts only with `retestBy` (who allowed
+    // it), else retestNeedsTechnician() says why.
     bool start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
-               const QHash<int, QHash<QString, double>>& typed, QString* error);
+               const QHash<int, QHash<QString, double>>& typed, QString* error,
+               const QString& retestBy = QString());
+    // The last serial start() was given, again, with the values it was given (a retest a
+    // technician allowed, `retestBy` naming them).
+    bool startAgain(ModbusClient* client, const QString& retestBy, QString* error);
+    QString lastSerial() const { return m_lastStart.serial; }
     void cancel(const QString& reason = QString());
     void connectionLost(const QString& error);
     bool isRunning() const { return m_run && m_run->isRunning(); }
@@ -92,7 +90,17 @@ public:
     QString startingSerial() const { return m_pendingSerial; }
     EolRun* run() const { return m_run; }
     qint64 elapsedMs() const { return m_run ? m_run->elapsedMs() : 0; }
-    const Counters& counters() const { return m_counters; }
+    // This station's figures for this recipe version in this shift, as the database holds them.
+    StationYield* yield() const { return m_yield; }
+    // The last retest decision (its attempt number) for the unit started last.
+    const RetestPolicy::Decision& lastDecision() const { return m_decision; }
+    // Machine numbers whose alarm was latched before the last unit's test: a station error
+    // that resetAlarmsAndRetry() may clear (the operator asks for it).
+    QVector<int> latchedAlarms() const { return m_latchedAlarms; }
+    bool isResettingAlarms() const { return bool(m_alarmReset); }
+    // Resets those alarms (each drive's reset rules) and, when all are cleared, starts the same
+    // serial again with the values it was given.
+    void resetAlarmsAndRetry(ModbusClient* client);
     const QVector<UnitRecord>& lastUnits() const { return m_last; } // newest first
     QStringList unconfirmedStops() const { return m_unconfirmed; }
     QString storeError() const { return m_storeError; }
@@ -134,13 +142,20 @@ signals:
     void safetyChanged(); // making safe began or ended (safety() holds what it found)
     // A unit start() accepted while the drives were made safe did not start after all.
     void startRefused(const QString& serial, const QString& why);
+    // The serial was tested before and the recipe wants a technician to allow another test.
+    void retestNeedsTechnician(const QString& serial, const QString& why);
+    // A retest that needed a technician was allowed by `by` (recorded in the audit trail).
+    void retestAllowed(const QString& serial, const QString& why, const QString& by);
+    void alarmResetStarted(const QVector<int>& machineNumbers);
+    void alarmResetFinished(bool cleared, const QStringList& texts);
     // The answer to openDatabase(): `error` names the database and why not.
     void databaseOpened(bool ok, const QString& error);
 
 private:
     void finished(const UnitRecord& record);
     void scheduleRetry();
-    void count(const UnitRecord& record); // a recorded verdict, into this shift's counters
+    void count(const UnitRecord& record); // a recorded verdict: the shift's figures again
+    void refreshYield();
     void begin(ModbusClient* client, TrafficLog* traffic, const EolRun::Options& options);
     QString unsafeText() const;
 
@@ -154,8 +169,17 @@ private:
     QString m_operator;
     EolStepRunner::Timing m_timing;
     QPointer<EolRun> m_run;
-    Counters m_counters;
-    QHash<QString, bool> m_firstResult; // serial → its first verdict was a pass
+    StationYield* m_yield;
+    RetestPolicy::Decision m_decision;
+    quint64 m_startToken = 0; // a retest check's answer for a start since cancelled is dropped
+    struct LastStart
+    {
+        QString serial;
+        QHash<int, QHash<QString, double>> typed;
+        TrafficLog* traffic = nullptr;
+    } m_lastStart;
+    QVector<int> m_latchedAlarms;
+    QPointer<StationAlarmReset> m_alarmReset;
     QVector<UnitRecord> m_last;
     QStringList m_unconfirmed;
     QString m_storeError;

@@ -106,4 +106,26 @@ QString Recipe::positionText(int index, int machineNumber)
     return tr("position %1 (machine number %2)").arg(index + 1).arg(machineNumber);
 }
 
+QString Recipe::passedName(RecipeRetest::Passed passed)
+{
+    switch (passed) {
+    case RecipeRetest::Passed::Technician:
+        return QStringLiteral("technician");
+    case RecipeRetest::Passed::Refuse:
+        return QStringLiteral("refuse");
+    case RecipeRetest::Passed::Allow:
+        return QStringLiteral("allow");
+    }
+    return QString();
+}
+
+std::optional<RecipeRetest::Passed> Recipe::passedFromName(const QString& name)
+{
+    for (auto p : {RecipeRetest::Passed::Technician, RecipeRetest::Passed::Refuse,
+                   RecipeRetest::Passed::Allow})
+        if (passedName(p) == name)
+            return p;
+    return std::nullopt;
+}
+
 } // namespace opentop

@@ -19,6 +19,7 @@ public:
     QString revision; // "B"
     QString description;
     QVector<RecipePosition> positions; // in fixture order
+    RecipeRetest retest;               // absent from a file: the defaults
 
     const RecipePosition* position(int machineNumber) const;
 
@@ -29,6 +30,8 @@ public:
     // The step in words for people: "wait for speed".
     static QString stepTitle(RecipeStep::Type type);
     static QString sourceName(RecipeUnitValue::Source source);
+    static QString passedName(RecipeRetest::Passed passed); // "technician", "refuse", "allow"
+    static std::optional<RecipeRetest::Passed> passedFromName(const QString& name);
     static std::optional<RecipeUnitValue::Source> sourceFromName(const QString& name);
     // What a hold or read step may measure of a parameter.
     static QStringList statistics();

@@ -27,12 +27,13 @@ QByteArray scalar(const QJsonValue& value)
 QStringList orderedKeys(const QJsonObject& object)
 {
     static const char* const order[] = {
-        "format",    "formatVersion", "product",  "revision",     "description", "machineNumber",
-        "name",      "family",        "variants", "firmware",     "type",        "parameter",
-        "statistic", "spno",          "speed",    "direction",    "target",      "tolerance",
-        "value",     "min",           "max",      "lower",        "upper",       "equals",
-        "unit",      "timeout",       "duration", "deceleration", "margin",      "source",
-        "settings",  "unitValues",    "steps",    "limits",       "positions",   "checksum"};
+        "format",       "formatVersion", "product",  "revision",     "description", "machineNumber",
+        "name",         "family",        "variants", "firmware",     "type",        "parameter",
+        "statistic",    "spno",          "speed",    "direction",    "target",      "tolerance",
+        "value",        "min",           "max",      "lower",        "upper",       "equals",
+        "unit",         "timeout",       "duration", "deceleration", "margin",      "source",
+        "settings",     "unitValues",    "steps",    "limits",       "positions",   "maxAttempts",
+        "passedSerial", "retest",        "checksum"};
     QStringList keys;
     for (const char* k : order) {
         if (object.contains(QLatin1String(k)))
@@ -209,6 +210,13 @@ QJsonObject RecipeFile::toObject(const Recipe& recipe)
                      {QStringLiteral("revision"), recipe.revision},
                      {QStringLiteral("positions"), positions}};
     insertText(root, "description", recipe.description);
+    // Left out when it is the default, so that older files keep their checksums.
+    if (recipe.retest != RecipeRetest()) {
+        QJsonObject retest{
+            {QStringLiteral("maxAttempts"), recipe.retest.maxAttempts},
+            {QStringLiteral("passedSerial"), Recipe::passedName(recipe.retest.passed)}};
+        root.insert(QStringLiteral("retest"), retest);
+    }
     return root;
 }
 

@@ -57,7 +57,9 @@ std::optional<Recipe> RecipeParser::parse(const QByteArray& data, QString* error
                   {QStringLiteral("format"), QStringLiteral("formatVersion"),
                    QStringLiteral("product"), QStringLiteral("revision"),
                    QStringLiteral("description"), QStringLiteral("positions"),
-                   QStringLiteral("checksum")}))
+                   QStringLiteral("retest"), QStringLiteral("checksum")}))
+        return refuse(m_error);
+    if (root.contains(QStringLiteral("retest")) && !readRetest(root, &recipe.retest))
         return refuse(m_error);
     if (!text(root, "product", QString(), &recipe.product, true) ||
         !text(root, "revision", QString(), &recipe.revision, true) ||
@@ -299,6 +301,38 @@ bool RecipeParser::readLimit(const QJsonObject& o, const QString& at, bool withP
     limit->unit = o.value(QStringLiteral("unit")).toString();
     if (!limit->lower && !limit->upper)
         return fail(tr("%1: a limit needs \"lower\", \"upper\" or both").arg(at));
+    return true;
+}
+
+bool RecipeParser::readRetest(const QJsonObject& root, RecipeRetest* retest)
+{
+    const QString at = QStringLiteral("retest");
+    const QJsonValue v = root.value(at);
+    if (!v.isObject())
+        return fail(tr("\"retest\" must be an object"));
+    const QJsonObject o = v.toObject();
+    if (!onlyKeys(o, at, {QStringLiteral("maxAttempts"), QStringLiteral("passedSerial")}))
+        return false;
+    if (o.contains(QStringLiteral("maxAttempts"))) {
+        double n = 0;
+        if (!number(o, "maxAttempts", at, &n))
+            return false;
+        if (n != std::floor(n) || n < 0 || n > 100)
+            return fail(tr("retest: \"maxAttempts\" must be a whole number from 0 (no limit) to "
+                           "100"));
+        retest->maxAttempts = int(n);
+    }
+    if (o.contains(QStringLiteral("passedSerial"))) {
+        QString name;
+        if (!text(o, "passedSerial", at, &name, true))
+            return false;
+        const auto passed = Recipe::passedFromName(name);
+        if (!passed)
+            return fail(tr("retest: \"passedSerial\" must be technician, refuse or allow, not "
+                           "\"%1\"")
+                            .arg(name));
+        retest->passed = *passed;
+    }
     return true;
 }
 

@@ -77,6 +77,24 @@ struct RecipeStep
 };
 
 // One drive of the unit, at a fixed machine number of the fixture.
+// What a station does with a serial tested before (docs/eol-results.md, "Retests").
+struct RecipeRetest
+{
+    enum class Passed
+    {
+        Technician, // a serial that passed before is tested again only when a technician says so
+        Refuse,     // never again under this station
+        Allow       // like any other retest
+    };
+    int maxAttempts = 3; // verdicts a serial may get under this recipe version; 0: no limit
+    Passed passed = Passed::Technician;
+    bool operator==(const RecipeRetest& o) const
+    {
+        return maxAttempts == o.maxAttempts && passed == o.passed;
+    }
+    bool operator!=(const RecipeRetest& o) const { return !(*this == o); }
+};
+
 struct RecipePosition
 {
     int machineNumber = 0;

@@ -66,23 +66,39 @@ QByteArray ResultCsv::measurements(const QVector<UnitRecord>& records)
 
 QByteArray ResultCsv::yield(const QVector<YieldRow>& rows)
 {
-    QByteArray csv =
-        line({QStringLiteral("recipe"), QStringLiteral("shift"), QStringLiteral("serials"),
-              QStringLiteral("first_pass"), QStringLiteral("first_pass_yield"),
-              QStringLiteral("records"), QStringLiteral("not_finished"),
-              QStringLiteral("failure_reason"), QStringLiteral("count")});
+    QByteArray csv = line(
+        {QStringLiteral("recipe"), QStringLiteral("revision"), QStringLiteral("checksum"),
+         QStringLiteral("shift"), QStringLiteral("serials"), QStringLiteral("first_pass"),
+         QStringLiteral("first_pass_yield"), QStringLiteral("second_pass"),
+         QStringLiteral("second_pass_yield"), QStringLiteral("last_pass"),
+         QStringLiteral("last_pass_yield"), QStringLiteral("records"), QStringLiteral("passed"),
+         QStringLiteral("failed"), QStringLiteral("station_errors"), QStringLiteral("not_finished"),
+         QStringLiteral("reason_kind"), QStringLiteral("reason"), QStringLiteral("count")});
     for (const YieldRow& r : rows) {
         const QStringList head{r.recipe,
+                               r.revision,
+                               r.checksum,
                                r.shift,
                                QString::number(r.serials),
                                QString::number(r.firstPass),
                                shortest(r.firstPassYield()),
+                               QString::number(r.secondPass),
+                               shortest(r.secondPassYield()),
+                               QString::number(r.lastPass),
+                               shortest(r.lastPassYield()),
                                QString::number(r.records),
+                               QString::number(r.passed),
+                               QString::number(r.failed),
+                               QString::number(r.stationErrors),
                                QString::number(r.running)};
-        if (r.failureReasons.isEmpty())
-            csv += line(head + QStringList{QString(), QStringLiteral("0")});
+        if (r.failureReasons.isEmpty() && r.stationReasons.isEmpty())
+            csv += line(head + QStringList{QString(), QString(), QStringLiteral("0")});
         for (auto it = r.failureReasons.cbegin(); it != r.failureReasons.cend(); ++it)
-            csv += line(head + QStringList{it.key(), QString::number(it.value())});
+            csv += line(head +
+                        QStringList{QStringLiteral("fail"), it.key(), QString::number(it.value())});
+        for (auto it = r.stationReasons.cbegin(); it != r.stationReasons.cend(); ++it)
+            csv += line(head + QStringList{QStringLiteral("station"), it.key(),
+                                           QString::number(it.value())});
     }
     return csv;
 }

@@ -14,7 +14,7 @@ namespace {
 
 const char* const kUnitColumns =
     "unit_id, serial, station, operator_name, started_utc, ended_utc, recipe_name,"
-    " recipe_revision, recipe_checksum, status, failure_reason";
+    " recipe_revision, recipe_checksum, status, failure_reason, %1";
 
 UnitRecord unitFrom(const QSqlQuery& q)
 {
@@ -31,6 +31,7 @@ UnitRecord unitFrom(const QSqlQuery& q)
     // A status this program does not know is shown as not proven, never as a pass.
     r.status = unitStatusFromName(q.value(9).toString()).value_or(UnitStatus::Interrupted);
     r.failureReason = q.value(10).toString();
+    r.attempt = q.value(11).toInt(); // NULL before schema 5: 0
     return r;
 }
 
@@ -49,6 +50,13 @@ bool fail(const QSqlQuery& q, QString* error)
 }
 
 } // namespace
+
+QString ResultQueries::unitColumns() const
+{
+    // Attempt numbers came with schema 5.
+    return QString::fromLatin1(kUnitColumns)
+        .arg(database_.schemaVersion() >= 5 ? QStringLiteral("attempt") : QStringLiteral("NULL"));
+}
 
 ResultQueries::ResultQueries(ResultDatabase& database)
     : database_(database)
@@ -95,11 +103,13 @@ std::optional<QVector<UnitRecord>> ResultQueries::find(const ResultFilter& f, QS
         add("started_utc < ?", UnitRecordJson::timeText(f.to));
     if (!f.recipe.isEmpty())
         add("recipe_name = ?", f.recipe);
+    if (!f.checksum.isEmpty())
+        add("recipe_checksum = ?", f.checksum);
     if (f.status)
         add("status = ?", unitStatusName(*f.status));
     if (!f.station.isEmpty())
         add("station = ?", f.station);
-    QString sql = QStringLiteral("SELECT %1 FROM units").arg(QLatin1String(kUnitColumns));
+    QString sql = QStringLiteral("SELECT %1 FROM units").arg(unitColumns());
     if (!where.isEmpty())
         sql += QStringLiteral(" WHERE ") + where.join(QStringLiteral(" AND "));
     // The newest `limit` when limited, returned oldest first like the rest.
@@ -130,8 +140,7 @@ std::optional<UnitRecord> ResultQueries::load(const QString& unitId, QString* er
 {
     QSqlQuery q(database_.db());
     q.setForwardOnly(true);
-    q.prepare(
-        QStringLiteral("SELECT %1 FROM units WHERE unit_id = ?").arg(QLatin1String(kUnitColumns)));
+    q.prepare(QStringLiteral("SELECT %1 FROM units WHERE unit_id = ?").arg(unitColumns()));
     q.addBindValue(unitId);
     if (!q.exec()) {
         fail(q, error);
@@ -191,17 +200,20 @@ std::optional<UnitRecord> ResultQueries::load(const QString& unitId, QString* er
     return r;
 }
 
-std::optional<QSet<QPair<QString, QString>>> ResultQueries::testedBefore(const ResultFilter& f,
-                                                                         QString* error) const
+std::optional<YieldReport::Earlier> ResultQueries::testedBefore(const ResultFilter& f,
+                                                                QString* error) const
 {
-    QSet<QPair<QString, QString>> earlier;
+    YieldReport::Earlier earlier;
     if (!f.from.isValid())
         return earlier;
-    // The units in the range (as find() selects them) that have an earlier record.
-    QString sql = QStringLiteral(
-        "SELECT DISTINCT r.recipe_name, r.serial FROM units r WHERE r.started_utc >= ?"
-        " AND EXISTS (SELECT 1 FROM units e WHERE e.serial = r.serial"
-        " AND e.recipe_name = r.recipe_name AND e.started_utc < ?)");
+    // The verdicts before the range of each (checksum, serial) the range (as find() selects
+    // it) has a unit of.
+    QString sql =
+        QStringLiteral("SELECT e.recipe_checksum, e.serial, COUNT(*),"
+                       " SUM(CASE WHEN e.status = 'pass' THEN 1 ELSE 0 END) FROM units e"
+                       " WHERE e.started_utc < ? AND e.status IN ('pass', 'fail')"
+                       " AND EXISTS (SELECT 1 FROM units r WHERE r.serial = e.serial"
+                       " AND r.recipe_checksum = e.recipe_checksum AND r.started_utc >= ?");
     QVariantList values{UnitRecordJson::timeText(f.from), UnitRecordJson::timeText(f.from)};
     auto add = [&](const char* condition, const QVariant& value) {
         sql += QLatin1String(condition);
@@ -215,10 +227,13 @@ std::optional<QSet<QPair<QString, QString>>> ResultQueries::testedBefore(const R
         add(" AND r.serial = ?", f.serial);
     if (!f.recipe.isEmpty())
         add(" AND r.recipe_name = ?", f.recipe);
+    if (!f.checksum.isEmpty())
+        add(" AND r.recipe_checksum = ?", f.checksum);
     if (f.status)
         add(" AND r.status = ?", unitStatusName(*f.status));
     if (!f.station.isEmpty())
         add(" AND r.station = ?", f.station);
+    sql += QStringLiteral(") GROUP BY e.recipe_checksum, e.serial");
     QSqlQuery q(database_.db());
     q.setForwardOnly(true);
     q.prepare(sql);
@@ -229,8 +244,52 @@ std::optional<QSet<QPair<QString, QString>>> ResultQueries::testedBefore(const R
         return std::nullopt;
     }
     while (q.next())
-        earlier.insert({q.value(0).toString(), q.value(1).toString()});
+        earlier.insert({q.value(0).toString(), q.value(1).toString()},
+                       {q.value(2).toInt(), q.value(3).toInt() > 0});
     return earlier;
+}
+
+std::optional<ResultQueries::SerialHistory>
+ResultQueries::serialHistory(const QString& serial, const QString& checksum, QString* error) const
+{
+    QSqlQuery q(database_.db());
+    q.setForwardOnly(true);
+    q.prepare(QStringLiteral("SELECT unit_id, status, recipe_checksum FROM units WHERE serial = ?"
+                             " AND status IN ('pass', 'fail') ORDER BY started_utc, unit_id"));
+    q.addBindValue(serial);
+    if (!q.exec()) {
+        fail(q, error);
+        return std::nullopt;
+    }
+    SerialHistory h;
+    while (q.next()) {
+        const bool pass = q.value(1).toString() == QLatin1String("pass");
+        if (q.value(2).toString() == checksum) {
+            ++h.verdicts;
+            h.failures += pass ? 0 : 1;
+        }
+        if (pass) {
+            h.passedAny = true;
+            h.passedUnits << q.value(0).toString();
+        }
+    }
+    return h;
+}
+
+std::optional<QVector<UnitRecord>> ResultQueries::earlierOf(const UnitRecord& record,
+                                                            QString* error) const
+{
+    ResultFilter filter;
+    filter.serial = record.serial;
+    filter.to = record.started;
+    auto units = find(filter, error);
+    if (units) // a serial with * or ? is a pattern to find(): only this very serial
+        units->erase(std::remove_if(units->begin(), units->end(),
+                                    [&record](const UnitRecord& u) {
+                                        return u.serial != record.serial || u.id == record.id;
+                                    }),
+                     units->end());
+    return units;
 }
 
 std::optional<QVector<UnitRecord>> ResultQueries::history(const QString& serial,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "eol/UnitRecord.h"
+#include "eol/YieldReport.h"
 
 #include <QCoreApplication>
 #include <QPair>
@@ -20,6 +21,7 @@ struct ResultFilter
     QDateTime from;                   // started at or after (UTC)
     QDateTime to;                     // started before
     QString recipe;                   // recipe name
+    QString checksum;                 // recipe checksum (one version of a recipe)
     std::optional<UnitStatus> status; // Pass matches 'pass' only: running/interrupted never do
     QString station;
     int limit = 0; // the newest `limit` units; 0: all
@@ -40,16 +42,32 @@ public:
     std::optional<QVector<UnitRecord>> find(const ResultFilter& filter, QString* error) const;
     // One whole record; nullopt with *error when there is none or on an error.
     std::optional<UnitRecord> load(const QString& unitId, QString* error) const;
+    // The serial's records begun before `record` (own rows), oldest first: what its
+    // certificate lists as earlier tests.
+    std::optional<QVector<UnitRecord>> earlierOf(const UnitRecord& record, QString* error) const;
     // Every record of a serial number, whole, oldest first (a certificate, a trace).
     std::optional<QVector<UnitRecord>> history(const QString& serial, QString* error) const;
 
-    // (recipe name, serial) of the units `filter` finds that were already tested for that recipe
-    // before filter.from: a report over a time range gives them to YieldReport so that a
-    // retest is never taken for a first pass. Empty when the filter has no start.
-    std::optional<QSet<QPair<QString, QString>>> testedBefore(const ResultFilter& filter,
-                                                              QString* error) const;
+    // The verdicts before filter.from of each (recipe checksum, serial) that `filter` finds
+    // units of: a report over a time range gives them to YieldReport so that a retest is never
+    // taken for a first pass. Empty when the filter has no start.
+    std::optional<YieldReport::Earlier> testedBefore(const ResultFilter& filter,
+                                                     QString* error) const;
+    // The verdicts a serial has under a recipe (checksum), oldest first, and whether it passed
+    // under any recipe: what a retest limit is decided on (RetestPolicy).
+    struct SerialHistory
+    {
+        int verdicts = 0;        // pass and fail records under this checksum
+        int failures = 0;        // of which fails
+        bool passedAny = false;  // a pass under any recipe
+        QStringList passedUnits; // unit ids of those passes, newest last
+    };
+    std::optional<SerialHistory> serialHistory(const QString& serial, const QString& checksum,
+                                               QString* error) const;
 
 private:
+    QString unitColumns() const; // the units' columns unitFrom() reads
+
     ResultDatabase& database_;
 };
 

@@ -76,7 +76,8 @@ const QVector<ResultSchema::Migration>& ResultSchema::migrations()
                          " passed INTEGER NOT NULL,"
                          " PRIMARY KEY (unit_id, seq))"),
           QStringLiteral("CREATE INDEX units_by_serial ON units (serial, started_utc)"),
-          QStringLiteral("CREATE INDEX units_by_time ON units (started_utc)")}},
+          QStringLiteral("CREATE INDEX units_by_time ON units (started_utc)")},
+         {}},
         {2,
          QStringLiteral("traffic around a failure; indexes by recipe and by station"),
          {QStringLiteral("CREATE TABLE unit_traffic ("
@@ -85,7 +86,8 @@ const QVector<ResultSchema::Migration>& ResultSchema::migrations()
                          " line TEXT NOT NULL,"
                          " PRIMARY KEY (unit_id, seq))"),
           QStringLiteral("CREATE INDEX units_by_recipe ON units (recipe_name, started_utc)"),
-          QStringLiteral("CREATE INDEX units_by_station ON units (station, status)")}},
+          QStringLiteral("CREATE INDEX units_by_station ON units (station, status)")},
+         {}},
         {3,
          QStringLiteral("station leases: which running unit belongs to a process still alive"),
          {QStringLiteral("CREATE TABLE station_leases ("
@@ -98,7 +100,42 @@ const QVector<ResultSchema::Migration>& ResultSchema::migrations()
                          " heartbeat_s DOUBLE PRECISION NOT NULL)"),
           // NULL on rows from before leases: the station name decides for those, as it did.
           QStringLiteral("ALTER TABLE units ADD COLUMN lease_id VARCHAR(40)"),
-          QStringLiteral("CREATE INDEX units_by_status ON units (status)")}},
+          QStringLiteral("CREATE INDEX units_by_status ON units (status)")},
+         {}},
+        {5,
+         QStringLiteral("station errors kept apart from verdicts; attempt numbers"),
+         {// PostgreSQL names a column's CHECK <table>_<column>_check.
+          QStringLiteral("ALTER TABLE units DROP CONSTRAINT units_status_check"),
+          QStringLiteral("ALTER TABLE units ADD CONSTRAINT units_status_check CHECK (status IN"
+                         " ('running', 'interrupted', 'pass', 'fail', 'aborted', 'error'))"),
+          QStringLiteral("ALTER TABLE units ADD COLUMN attempt INTEGER"),
+          QStringLiteral("CREATE INDEX units_by_checksum ON units (recipe_checksum, serial)")},
+         {QStringLiteral("CREATE TABLE units_v5 ("
+                         " unit_id VARCHAR(40) NOT NULL PRIMARY KEY,"
+                         " serial VARCHAR(200) NOT NULL,"
+                         " station VARCHAR(200) NOT NULL,"
+                         " operator_name VARCHAR(200) NOT NULL,"
+                         " started_utc VARCHAR(32) NOT NULL,"
+                         " ended_utc VARCHAR(32),"
+                         " recipe_name VARCHAR(200) NOT NULL,"
+                         " recipe_revision VARCHAR(100) NOT NULL,"
+                         " recipe_checksum VARCHAR(200) NOT NULL,"
+                         " status VARCHAR(20) NOT NULL CHECK (status IN"
+                         "  ('running', 'interrupted', 'pass', 'fail', 'aborted', 'error')),"
+                         " failure_reason TEXT NOT NULL,"
+                         " lease_id VARCHAR(40),"
+                         " attempt INTEGER)"),
+          QStringLiteral("INSERT INTO units_v5 SELECT unit_id, serial, station, operator_name,"
+                         " started_utc, ended_utc, recipe_name, recipe_revision, recipe_checksum,"
+                         " status, failure_reason, lease_id, NULL FROM units"),
+          QStringLiteral("DROP TABLE units"),
+          QStringLiteral("ALTER TABLE units_v5 RENAME TO units"),
+          QStringLiteral("CREATE INDEX units_by_serial ON units (serial, started_utc)"),
+          QStringLiteral("CREATE INDEX units_by_time ON units (started_utc)"),
+          QStringLiteral("CREATE INDEX units_by_recipe ON units (recipe_name, started_utc)"),
+          QStringLiteral("CREATE INDEX units_by_station ON units (station, status)"),
+          QStringLiteral("CREATE INDEX units_by_status ON units (status)"),
+          QStringLiteral("CREATE INDEX units_by_checksum ON units (recipe_checksum, serial)")}},
     };
     return list;
 }
@@ -125,10 +162,22 @@ bool ResultSchema::migrate(QSqlDatabase& db, ResultUrl::Engine engine, int targe
                            int* appliedVersion, QString* error)
 {
     const bool sqlite = engine == ResultUrl::Engine::Sqlite;
-    if (!exec(db, sqlite ? QStringLiteral("BEGIN IMMEDIATE") : QStringLiteral("BEGIN"), error))
+    // A table rebuilt (sqliteStatements) is dropped with its children's rows still pointing at
+    // it: SQLite checks foreign keys only outside a transaction, so they are checked by hand
+    // before the commit and switched on again after it.
+    if (sqlite && !exec(db, QStringLiteral("PRAGMA foreign_keys=OFF"), error))
         return false;
+    auto keysOn = [&] {
+        if (sqlite)
+            QSqlQuery(db).exec(QStringLiteral("PRAGMA foreign_keys=ON"));
+    };
+    if (!exec(db, sqlite ? QStringLiteral("BEGIN IMMEDIATE") : QStringLiteral("BEGIN"), error)) {
+        keysOn();
+        return false;
+    }
     auto rollback = [&] {
         QSqlQuery(db).exec(QStringLiteral("ROLLBACK"));
+        keysOn();
         return false;
     };
     if (!sqlite &&
@@ -158,7 +207,9 @@ bool ResultSchema::migrate(QSqlDatabase& db, ResultUrl::Engine engine, int targe
     for (const Migration& m : migrations()) {
         if (m.version <= found || m.version > target)
             continue;
-        for (const QString& sql : m.statements)
+        const QStringList& statements =
+            sqlite && !m.sqliteStatements.isEmpty() ? m.sqliteStatements : m.statements;
+        for (const QString& sql : statements)
             if (!exec(db, sql, error))
                 return rollback();
         QSqlQuery insert(db);
@@ -175,8 +226,20 @@ bool ResultSchema::migrate(QSqlDatabase& db, ResultUrl::Engine engine, int targe
         qCInfo(lcModel) << "results database: schema version" << m.version << m.description;
         now = m.version;
     }
+    if (sqlite) {
+        QSqlQuery check(db);
+        if (!check.exec(QStringLiteral("PRAGMA foreign_key_check")) || check.next()) {
+            if (error)
+                *error = check.lastError().isValid()
+                             ? check.lastError().text()
+                             : tr("the migration left a record pointing at no unit (table %1)")
+                                   .arg(check.value(0).toString());
+            return rollback();
+        }
+    }
     if (!exec(db, QStringLiteral("COMMIT"), error))
         return rollback();
+    keysOn();
     if (appliedVersion)
         *appliedVersion = now;
     return true;

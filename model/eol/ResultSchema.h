@@ -23,6 +23,9 @@ public:
         int version;
         QString description;
         QStringList statements;
+        // SQLite cannot change a CHECK constraint in place: when given, these replace
+        // `statements` there (a table rebuilt under the migration's transaction).
+        QStringList sqliteStatements;
     };
     static const QVector<Migration>& migrations();
     static int currentVersion(); // the newest this program knows

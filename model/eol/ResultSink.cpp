@@ -126,10 +126,11 @@ ResultSink::Saved ResultSink::begin(UnitRecord& record)
 
 ResultSink::Saved ResultSink::finish(const UnitRecord& record)
 {
-    return save(ResultSpool::Kind::Finish, record);
+    UnitRecord copy = record;
+    return save(ResultSpool::Kind::Finish, copy);
 }
 
-ResultSink::Saved ResultSink::save(ResultSpool::Kind kind, const UnitRecord& record)
+ResultSink::Saved ResultSink::save(ResultSpool::Kind kind, UnitRecord& record)
 {
     Saved saved;
     if (!m_store && m_url.isEmpty()) {
@@ -144,9 +145,13 @@ ResultSink::Saved ResultSink::save(ResultSpool::Kind kind, const UnitRecord& rec
     else {
         const Outcome o = write(
             [&](ResultStore& store, QString* why) {
+                // A begin learns its attempt number from the database.
                 UnitRecord r = record;
-                return kind == ResultSpool::Kind::Begin ? store.beginUnit(r, why)
-                                                        : store.finishUnit(r, why);
+                const bool ok = kind == ResultSpool::Kind::Begin ? store.beginUnit(r, why)
+                                                                 : store.finishUnit(r, why);
+                if (ok)
+                    record.attempt = r.attempt;
+                return ok;
             },
             &saved.error);
         if (o == Outcome::Done || o == Outcome::Refused || !m_spool)

@@ -69,7 +69,7 @@ private:
     };
     template <typename Write> Outcome write(Write write, QString* error);
     bool reconnect(QString* error);
-    Saved save(ResultSpool::Kind kind, const UnitRecord& record);
+    Saved save(ResultSpool::Kind kind, UnitRecord& record);
     Outcome deliver(const ResultSpool::Entry& entry, QString* error);
 
     QString m_url;

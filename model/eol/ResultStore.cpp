@@ -85,17 +85,35 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
         return false;
     QSqlQuery q(database_.db());
     const bool leases = hasLeases();
-    q.prepare(
-        QStringLiteral("INSERT INTO units (unit_id, serial, station, operator_name, started_utc,"
-                       " ended_utc, recipe_name, recipe_revision, recipe_checksum, status,"
-                       " failure_reason%1) VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', ''%2)")
-            .arg(leases ? QStringLiteral(", lease_id") : QString(),
-                 leases ? QStringLiteral(", ?") : QString()));
+    const bool attempts = hasAttempts();
+    if (attempts) {
+        // Counted in the transaction that inserts the row: a spooled unit sent later is
+        // numbered after the verdicts recorded before it, as it was tested.
+        q.prepare(QStringLiteral("SELECT COUNT(*) FROM units WHERE serial = ? AND"
+                                 " recipe_checksum = ? AND status IN ('pass', 'fail')"));
+        bind(q, {record.serial, record.recipeChecksum});
+        if (!run(q, error) || !q.next()) {
+            database_.rollback();
+            return false;
+        }
+        record.attempt = q.value(0).toInt() + 1;
+        q.finish();
+    }
+    q.prepare(QStringLiteral(
+                  "INSERT INTO units (unit_id, serial, station, operator_name, started_utc,"
+                  " ended_utc, recipe_name, recipe_revision, recipe_checksum, status,"
+                  " failure_reason%1%3) VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', ''%2%4)")
+                  .arg(leases ? QStringLiteral(", lease_id") : QString(),
+                       leases ? QStringLiteral(", ?") : QString(),
+                       attempts ? QStringLiteral(", attempt") : QString(),
+                       attempts ? QStringLiteral(", ?") : QString()));
     bind(q, {record.id, record.serial, record.station, record.operatorName,
              UnitRecordJson::timeText(record.started), record.recipeName, record.recipeRevision,
              record.recipeChecksum});
     if (leases)
         q.addBindValue(lease_.isEmpty() ? QVariant(QMetaType::fromType<QString>()) : lease_);
+    if (attempts)
+        q.addBindValue(record.attempt);
     if (!run(q, error) || !database_.commit(error)) {
         database_.rollback();
         return false;
@@ -157,7 +175,7 @@ bool ResultStore::finishUnit(UnitRecord& record, QString* error)
 {
     if (record.status == UnitStatus::Running || record.status == UnitStatus::Interrupted) {
         if (error)
-            *error = tr("a unit is finished with pass, fail or aborted, not %1")
+            *error = tr("a unit is finished with pass, fail, error or aborted, not %1")
                          .arg(unitStatusName(record.status));
         return false;
     }
@@ -201,8 +219,12 @@ bool ResultStore::finishUnit(UnitRecord& record, QString* error)
     q.prepare(QStringLiteral(
         "UPDATE units SET ended_utc = ?, status = ?, failure_reason = ?, operator_name = ?"
         " WHERE unit_id = ? AND status IN ('running', 'interrupted')"));
-    bind(q, {UnitRecordJson::timeText(record.ended), unitStatusName(record.status),
-             record.failureReason, record.operatorName, record.id});
+    // A database from before station errors has no 'error' status: it keeps them as aborted,
+    // which is kept out of yield there too.
+    const UnitStatus status =
+        record.status == UnitStatus::Error && !hasAttempts() ? UnitStatus::Aborted : record.status;
+    bind(q, {UnitRecordJson::timeText(record.ended), unitStatusName(status), record.failureReason,
+             record.operatorName, record.id});
     if (!run(q, error))
         return fail();
     if (q.numRowsAffected() != 1) {
@@ -249,6 +271,11 @@ void ResultStore::identify(UnitRecord& record)
 bool ResultStore::hasLeases() const
 {
     return database_.schemaVersion() >= 3;
+}
+
+bool ResultStore::hasAttempts() const
+{
+    return database_.schemaVersion() >= 5;
 }
 
 QString ResultStore::statusOf(const QString& unitId, QString* error)

@@ -53,6 +53,7 @@ private:
     bool writeChildren(const UnitRecord& record, QString* error);
 
     bool hasLeases() const;
+    bool hasAttempts() const; // schema 5: attempt numbers and the 'error' status
 
     ResultDatabase& database_;
     std::function<void()> hook_;

@@ -1,6 +1,7 @@
 #include "eol/ResultUrl.h"
 
 #include <QDir>
+#include <QFileInfo>
 #include <QStandardPaths>
 #include <QStringList>
 #include <QUrl>
@@ -166,6 +167,18 @@ QString ResultUrl::defaultLocation()
 {
     return QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))
         .filePath(QStringLiteral("opentop/results.db"));
+}
+
+QString ResultUrl::stationLocation(const QString& url)
+{
+    QString where = url;
+    if (where.isEmpty())
+        where = qEnvironmentVariable("OPENTOP_EOL_DB");
+    if (where.isEmpty()) {
+        where = defaultLocation();
+        QDir().mkpath(QFileInfo(where).absolutePath());
+    }
+    return where;
 }
 
 } // namespace opentop

@@ -32,6 +32,9 @@ public:
     // Where a station keeps its results when it is not told: results.db in the user's data
     // folder ($XDG_DATA_HOME/opentop, ~/.local/share/opentop).
     static QString defaultLocation();
+    // Where a station's results go: `url`, else OPENTOP_EOL_DB, else the default file (its
+    // folder made).
+    static QString stationLocation(const QString& url);
     static std::optional<ResultUrl>
     parse(const QString& text, QString* error,
           const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment());

@@ -13,7 +13,7 @@ struct StatusName
 constexpr StatusName kStatusNames[] = {
     {UnitStatus::Running, "running"}, {UnitStatus::Interrupted, "interrupted"},
     {UnitStatus::Pass, "pass"},       {UnitStatus::Fail, "fail"},
-    {UnitStatus::Aborted, "aborted"},
+    {UnitStatus::Aborted, "aborted"}, {UnitStatus::Error, "error"},
 };
 
 } // namespace
@@ -59,7 +59,7 @@ bool UnitRecord::operator==(const UnitRecord& o) const
     return id == o.id && serial == o.serial && station == o.station &&
            operatorName == o.operatorName && started == o.started && ended == o.ended &&
            recipeName == o.recipeName && recipeRevision == o.recipeRevision &&
-           recipeChecksum == o.recipeChecksum && status == o.status &&
+           recipeChecksum == o.recipeChecksum && status == o.status && attempt == o.attempt &&
            failureReason == o.failureReason && drives == o.drives &&
            writtenValues == o.writtenValues && measurements == o.measurements &&
            traffic == o.traffic;

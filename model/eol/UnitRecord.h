@@ -18,10 +18,14 @@ enum class UnitStatus
     Interrupted, // found still running after its station restarted: never a pass
     Pass,
     Fail,
-    Aborted // the run was cancelled or stopped by an error before a verdict
+    Aborted, // the operator cancelled the run before a verdict
+    // The station could not test the unit (no drive answers, a motor already turning, an alarm
+    // latched before the test): no verdict on the unit, kept out of yield and retest counts.
+    Error
 };
 
-QString unitStatusName(UnitStatus status); // "running", "interrupted", "pass", "fail", "aborted"
+QString unitStatusName(UnitStatus status); // "running", "interrupted", "pass", "fail", "aborted",
+                                           // "error"
 std::optional<UnitStatus> unitStatusFromName(const QString& name);
 
 // A drive of the unit, at its fixture position (the machine number set on its switches).
@@ -72,6 +76,10 @@ struct UnitRecord
     QString recipeRevision;
     QString recipeChecksum;
     UnitStatus status = UnitStatus::Running;
+    // Which verdict of this serial under this recipe (checksum) this is: 1 for the first test,
+    // 2 for the first retest… A record without a verdict (error, aborted) has the number its
+    // verdict would have had. 0: recorded before attempts were counted.
+    int attempt = 0;
     QString failureReason; // the first failure, in words; empty for a pass
     QVector<UnitDrive> drives;
     QVector<WrittenValue> writtenValues;
@@ -79,6 +87,8 @@ struct UnitRecord
     QStringList traffic; // decoded bus traffic around the failure, one line each
 
     bool isPass() const { return status == UnitStatus::Pass; }
+    // A pass or a fail: a verdict on the unit, as yield and retest limits count them.
+    bool hasVerdict() const { return status == UnitStatus::Pass || status == UnitStatus::Fail; }
     bool operator==(const UnitRecord& o) const;
     bool operator!=(const UnitRecord& o) const { return !(*this == o); }
 };

@@ -81,6 +81,7 @@ QJsonObject UnitRecordJson::toJson(const UnitRecord& r)
                                                {QStringLiteral("revision"), r.recipeRevision},
                                                {QStringLiteral("checksum"), r.recipeChecksum}}},
         {QStringLiteral("status"), unitStatusName(r.status)},
+        {QStringLiteral("attempt"), r.attempt},
         {QStringLiteral("failureReason"), r.failureReason},
         {QStringLiteral("drives"), drives},
         {QStringLiteral("writtenValues"), written},
@@ -126,6 +127,7 @@ std::optional<UnitRecord> UnitRecordJson::fromJson(const QJsonObject& json, QStr
     if (!status)
         return fail(tr("unknown unit status \"%1\"").arg(statusText));
     r.status = *status;
+    r.attempt = json.value(QStringLiteral("attempt")).toInt(); // absent in older files: 0
     r.failureReason = json.value(QStringLiteral("failureReason")).toString();
     for (const QJsonValue& v : json.value(QStringLiteral("drives")).toArray()) {
         const QJsonObject o = v.toObject();

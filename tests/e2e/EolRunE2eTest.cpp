@@ -159,6 +159,51 @@ TEST_F(EolRunE2e, APassExitsZeroAndAFailFiveBothRecorded)
     EXPECT_FALSE(failed->traffic.isEmpty());
 }
 
+// Issue 25 item 4: a passed serial is tested again only with --retest (its attempt numbered);
+// a position where no drive answers is a station error (exit 6), recorded, not a FAIL.
+TEST_F(EolRunE2e, APassedSerialNeedsRetestAndAMissingDriveIsAStationError)
+{
+    const QString recipe = writeRecipe(dir, 1, 0.5);
+    QProcess first;
+    first.start(cliProgram(), runArgs(sim.pty, recipe, QStringLiteral("SN-R"), db, 1));
+    CliResult r = finishCli(first, 60000);
+    ASSERT_EQ(r.code, 0) << (r.out + r.err).toStdString();
+    EXPECT_EQ(lastEvent(r.out, QStringLiteral("result")).value(QStringLiteral("attempt")).toInt(),
+              1);
+
+    QProcess again;
+    again.start(cliProgram(), runArgs(sim.pty, recipe, QStringLiteral("SN-R"), db, 1));
+    r = finishCli(again, 60000);
+    EXPECT_EQ(r.code, 3) << (r.out + r.err).toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("passed already")) &&
+                r.err.contains(QStringLiteral("--retest")))
+        << r.err.toStdString();
+
+    QProcess allowed;
+    allowed.start(cliProgram(), runArgs(sim.pty, recipe, QStringLiteral("SN-R"), db, 1)
+                                    << QStringLiteral("--retest"));
+    r = finishCli(allowed, 60000);
+    ASSERT_EQ(r.code, 0) << (r.out + r.err).toStdString();
+    EXPECT_EQ(lastEvent(r.out, QStringLiteral("result")).value(QStringLiteral("attempt")).toInt(),
+              2);
+    const auto retested = recordOf(db, QStringLiteral("SN-R"));
+    ASSERT_TRUE(retested);
+    EXPECT_EQ(retested->attempt, 2);
+
+    QProcess missing;
+    missing.start(cliProgram(),
+                  runArgs(sim.pty, writeRecipe(dir, 9, 0.5), QStringLiteral("SN-M"), db, 9));
+    r = finishCli(missing, 60000);
+    EXPECT_EQ(r.code, 6) << (r.out + r.err).toStdString();
+    EXPECT_EQ(lastEvent(r.out, QStringLiteral("result")).value(QStringLiteral("status")).toString(),
+              QStringLiteral("error"));
+    const auto error = recordOf(db, QStringLiteral("SN-M"));
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->status, UnitStatus::Error);
+    EXPECT_TRUE(error->failureReason.contains(QStringLiteral("no drive answers")))
+        << error->failureReason.toStdString();
+}
+
 TEST_F(EolRunE2e, InterruptedWhileTheMotorRunsStopsItAndRecordsAborted)
 {
     QProcess process;
@@ -193,7 +238,7 @@ TEST_F(EolRunE2e, APortThatVanishesLeavesAMotorItCannotStopNamedAndRecorded)
         << r.err.toStdString();
     const auto record = recordOf(db, QStringLiteral("SN-V"));
     ASSERT_TRUE(record);
-    EXPECT_EQ(record->status, UnitStatus::Aborted);
+    EXPECT_EQ(record->status, UnitStatus::Error) << "the station's port, not the unit";
     EXPECT_TRUE(record->failureReason.contains(QStringLiteral("NOT CONFIRMED STOPPED")))
         << record->failureReason.toStdString();
     sim.command(QStringLiteral("replug"));

@@ -1,10 +1,13 @@
 #include "CertificatePdf.h"
 #include "EolSampleUnit.h"
+#include "eol/CertificateHtml.h"
 
 #include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTextDocument>
+#include <algorithm>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -54,4 +57,62 @@ TEST(CertificatePdfTest, WritesAPdfWithTheUnitAndItsVerdict)
     QString error;
     EXPECT_FALSE(
         CertificatePdf::save(test::eolSampleUnit(QStringLiteral("X")), dir.path(), &error));
+}
+
+// Issue 25 item 6: a section's heading is never alone at the foot of a page, whatever the
+// number of rows before it (read back from the PDF, page by page).
+TEST(CertificatePdfTest, AHeadingAlwaysStandsOnThePageOfItsFirstRow)
+{
+    if (QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty())
+        GTEST_SKIP() << "pdftotext (poppler-utils) is not installed";
+    QTemporaryDir dir;
+    int broken = 0; // certificates whose pages break inside the sections tried
+    for (int extra = 0; extra < 48; extra += 1) {
+        UnitRecord r = test::eolSampleUnit(QStringLiteral("SN-LAYOUT"), UnitStatus::Pass);
+        for (int i = 0; i < extra; ++i)
+            r.writtenValues.append(r.writtenValues.first());
+        const QString path = dir.filePath(QStringLiteral("c%1.pdf").arg(extra));
+        QString error;
+        ASSERT_TRUE(CertificatePdf::save(r, path, &error)) << error.toStdString();
+        const QStringList pages = pdfText(path).split(QLatin1Char('\f'));
+        broken += pages.size() > 2 ? 1 : 0;
+        for (const QString& page : pages) {
+            QStringList lines = page.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+            lines.erase(std::remove_if(lines.begin(), lines.end(),
+                                       [](const QString& l) { return l.trimmed().isEmpty(); }),
+                        lines.end());
+            for (int i = 0; i < lines.size(); ++i) {
+                const QString line = lines.at(i).trimmed();
+                if (line != QLatin1String("Measurements") && line != QLatin1String("Settings") &&
+                    line != QLatin1String("Drives"))
+                    continue;
+                // The column titles and a first row follow on the same page (the footer line
+                // comes last on every page).
+                EXPECT_LT(i + 3, lines.size()) << qPrintable(line) << " at the foot of a page with "
+                                               << extra << " more settings";
+            }
+        }
+    }
+    EXPECT_GT(broken, 0) << "the certificates tried never reached a third page";
+}
+
+TEST(CertificatePdfTest, APassAfterFailsListsThemAndLongTrafficLinesWrap)
+{
+    UnitRecord earlier = test::eolSampleUnit(QStringLiteral("SN-AGAIN"), UnitStatus::Fail);
+    earlier.failureReason = QStringLiteral("position 1: Load rate 140 % above 100 %");
+    earlier.attempt = 1;
+    UnitRecord pass = test::eolSampleUnit(QStringLiteral("SN-AGAIN"), UnitStatus::Pass);
+    pass.attempt = 2;
+    pass.traffic = {QStringLiteral("12:00:00.000 TX ") +
+                    QStringLiteral("01 03 10 00 00 0A ").repeated(30)};
+    const QString html = CertificateHtml::html(pass, {earlier});
+    EXPECT_TRUE(html.contains(QStringLiteral("This serial failed 1 earlier test")))
+        << qPrintable(html);
+    EXPECT_TRUE(html.contains(QStringLiteral("Load rate 140 %")));
+    EXPECT_TRUE(html.contains(QStringLiteral("pre-wrap")));
+    QTextDocument doc;
+    doc.setHtml(html);
+    doc.setPageSize(CertificatePdf::bodySize());
+    EXPECT_LE(doc.idealWidth(), CertificatePdf::bodySize().width() + 1)
+        << "nothing runs past the margin";
 }

@@ -89,6 +89,17 @@
     </message>
 </context>
 <context>
+    <name>opentop::CertificateHtml</name>
+    <message numerus="yes">
+        <location filename="../../model/eol/CertificateHtml.cpp" line="114"/>
+        <source>This serial failed %n earlier test(s); they are listed below.</source>
+        <translation>
+            <numerusform>This serial failed %n earlier test; they are listed below.</numerusform>
+            <numerusform>This serial failed %n earlier tests; they are listed below.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::CompareDialog</name>
     <message numerus="yes">
         <location filename="../../ui/files/CompareDialog.cpp" line="255"/>
@@ -389,7 +400,7 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="265"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>
@@ -397,7 +408,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="438"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="472"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
@@ -487,15 +498,15 @@
 <context>
     <name>opentop::ResultsBrowser</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="319"/>
-        <source>%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)</source>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
-            <numerusform>%n unit, %1 passed · first-pass yield %2 (%3 of %4 serials)</numerusform>
-            <numerusform>%n units, %1 passed · first-pass yield %2 (%3 of %4 serials)</numerusform>
+            <numerusform>%n unit: %1 passed, %2 failed, %3 station errors · %4</numerusform>
+            <numerusform>%n units: %1 passed, %2 failed, %3 station errors · %4</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="405"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="399"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>%n unit written to %1</numerusform>

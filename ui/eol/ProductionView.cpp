@@ -2,6 +2,8 @@
 
 #include "eol/EolSpeedChart.h"
 #include "eol/EolStation.h"
+#include "eol/StationActions.h"
+#include "eol/StationFigures.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QApplication>
@@ -125,7 +127,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     middle->setStretchFactor(1, 2);
 
     m_units = table({tr("Time"), tr("Serial"), tr("Verdict"), tr("Reason")}, this);
-    m_counters = new QLabel(this);
+    m_counters = new StationFigures(m_station, this);
     m_counters->setFont(scaled(font(), 1.3, true));
 
     auto* layout = new QVBoxLayout(this);
@@ -136,6 +138,9 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     layout->addWidget(m_scanNote);
     layout->addWidget(m_verdict);
     layout->addWidget(m_reason);
+    m_actions = new StationActions(
+        m_station, m_client, [this] { return m_operator->text().trimmed(); }, this);
+    layout->addWidget(m_actions);
     layout->addWidget(middle, 3);
     layout->addWidget(m_counters);
     layout->addWidget(m_units, 2);
@@ -174,6 +179,12 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
         refreshRecipe();
         focusSerial();
     });
+    connect(m_station, &EolStation::retestNeedsTechnician, this,
+            [this](const QString&, const QString& why) {
+                showVerdict(tr("NOT STARTED"), QStringLiteral("#8a6d00"), why);
+                m_cancel->setEnabled(false);
+                focusSerial();
+            });
     connect(m_station, &EolStation::recording, this, [this](const QString& what) {
         if (!m_station->run())
             return;
@@ -262,15 +273,14 @@ void ProductionView::refreshRecipe()
     m_serial->setEnabled(m_station->hasRecipe() && !m_station->hasUnsavedResult());
 }
 
+QLabel* ProductionView::countersLabel() const
+{
+    return m_counters;
+}
+
 void ProductionView::refreshCounters()
 {
-    const EolStation::Counters& c = m_station->counters();
-    m_counters->setText(tr("Tested %1 · passed %2 · failed %3 · first-pass yield %4 %")
-                            .arg(c.tested)
-                            .arg(c.passed)
-                            .arg(c.failed)
-                            .arg(c.firstTested ? QString::number(c.firstPassYield(), 'f', 1)
-                                               : QStringLiteral("–")));
+    m_counters->refresh();
 }
 
 void ProductionView::showVerdict(const QString& text, const QString& colour, const QString& reason)
@@ -348,7 +358,10 @@ void ProductionView::unitStarted(const QString& serial)
         m_drives->setItem(row, 1, new QTableWidgetItem(tr("waiting")));
         m_drives->item(row, 0)->setData(Qt::UserRole, p.machineNumber);
     }
-    showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"), tr("Unit %1").arg(serial));
+    const int attempt = m_station->lastDecision().attempt;
+    showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"),
+                attempt > 1 ? tr("Unit %1 — attempt %2").arg(serial).arg(attempt)
+                            : tr("Unit %1").arg(serial));
     m_cancel->setEnabled(true);
     m_scanNote->hide();
     m_serial->clear(); // stays open: a serial scanned now is refused aloud (startUnit)
@@ -443,6 +456,12 @@ void ProductionView::showVerdictOf(const UnitRecord& record, const QString& reas
         break;
     case UnitStatus::Fail:
         showVerdict(tr("FAIL"), QStringLiteral("#b3261e"), reason);
+        break;
+    case UnitStatus::Error:
+        // The station could not test it: no verdict on the unit, and not counted as one.
+        showVerdict(
+            tr("STATION ERROR"), QStringLiteral("#8a6d00"),
+            tr("%1\nNot a verdict on the unit: fix the cause and test it again.").arg(reason));
         break;
     default:
         showVerdict(tr("ABORTED"), QStringLiteral("#b35c00"), reason);

@@ -16,6 +16,8 @@ namespace opentop {
 class EolSpeedChart;
 class EolStation;
 class ModbusClient;
+class StationActions;
+class StationFigures;
 class TrafficLog;
 
 // The operator screen of an end-of-line station: a large serial-number field that takes a
@@ -32,10 +34,11 @@ public:
     QLineEdit* serialField() const { return m_serial; }
     QLabel* verdictLabel() const { return m_verdict; }
     QLabel* reasonLabel() const { return m_reason; }
-    QLabel* countersLabel() const { return m_counters; }
+    QLabel* countersLabel() const;
     QLabel* databaseLabel() const { return m_database; }
     QLabel* noticeLabel() const { return m_notice; }
     QLabel* scanNoteLabel() const { return m_scanNote; }
+    StationActions* actions() const { return m_actions; }
     // The station makes the recipe's drives safe on the bus the window is connected to.
     void makeSafe();
     QPushButton* cancelButton() const { return m_cancel; }
@@ -84,7 +87,8 @@ private:
     QLabel* m_verdict;
     QLabel* m_reason;
     QTableWidget* m_units;
-    QLabel* m_counters;
+    StationFigures* m_counters;
+    StationActions* m_actions = nullptr;
     QElapsedTimer m_clock;
 };
 

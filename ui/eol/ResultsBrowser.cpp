@@ -141,7 +141,7 @@ QWidget* ResultsBrowser::makeFilters()
     m_period->setCurrentIndex(2);
     m_verdict = new QComboBox(box);
     m_verdict->addItem(tr("Any"), QString());
-    for (UnitStatus s : {UnitStatus::Pass, UnitStatus::Fail, UnitStatus::Aborted,
+    for (UnitStatus s : {UnitStatus::Pass, UnitStatus::Fail, UnitStatus::Error, UnitStatus::Aborted,
                          UnitStatus::Interrupted, UnitStatus::Running})
         m_verdict->addItem(CertificateHtml::verdictText(s), unitStatusName(s));
     auto* find = new QPushButton(tr("Search"), box);
@@ -246,8 +246,7 @@ bool ResultsBrowser::search()
     m_summary->setText(tr("Searching…"));
     struct Found
     {
-        std::optional<QVector<UnitRecord>> units;
-        std::optional<YieldReport::Earlier> earlier;
+        std::optional<YieldReport::Tables> tables;
         QString error;
     };
     auto found = std::make_shared<Found>();
@@ -258,31 +257,27 @@ bool ResultsBrowser::search()
                 found->error = tr("the results database is not open");
                 return;
             }
-            ResultQueries queries(*db);
-            found->units = queries.find(filter, &found->error);
-            if (found->units)
-                found->earlier = queries.testedBefore(filter, &found->error);
+            found->tables = YieldReport::query(*db, filter, ShiftPlan(), &found->error);
         },
         [this, found, generation] {
             if (generation != m_generation)
                 return;
-            if (!found->units || !found->earlier) {
+            if (!found->tables) {
                 m_summary->clear();
                 say(found->error, true);
                 emit searched(false);
                 return;
             }
-            showFound(*found->units, *found->earlier);
+            showFound(*found->tables);
             emit searched(true);
         });
     return true;
 }
 
-void ResultsBrowser::showFound(const QVector<UnitRecord>& units,
-                               const YieldReport::Earlier& earlier)
+void ResultsBrowser::showFound(const YieldReport::Tables& tables)
 {
-    m_units = units;
-    m_earlier = earlier;
+    m_units = tables.units;
+    m_yield = YieldReport::total(tables.perRecipe);
     m_table->setRowCount(int(m_units.size()));
     for (int row = 0; row < m_units.size(); ++row) {
         const UnitRecord& u = m_units.at(row);
@@ -306,22 +301,14 @@ void ResultsBrowser::showFound(const QVector<UnitRecord>& units,
 
 QString ResultsBrowser::summary() const
 {
-    int serials = 0;
-    int firstPass = 0;
-    int passed = 0;
-    for (const UnitRecord& u : m_units)
-        passed += u.isPass() ? 1 : 0;
-    // A serial tested before the period is a retest here, never a first pass.
-    for (const YieldRow& row : YieldReport::perRecipe(m_units, m_earlier)) {
-        serials += row.serials;
-        firstPass += row.firstPass;
-    }
-    return tr("%n unit(s), %1 passed · first-pass yield %2 (%3 of %4 serials)", nullptr,
+    // The same figures as the station's screen and `eol results --yield` (YieldReport): a
+    // serial tested before the period is a retest here, never a first pass.
+    return tr("%n unit(s): %1 passed, %2 failed, %3 station errors · %4", nullptr,
               int(m_units.size()))
-        .arg(passed)
-        .arg(serials ? tr("%1 %").arg(100.0 * firstPass / serials, 0, 'f', 1) : tr("–"))
-        .arg(firstPass)
-        .arg(serials);
+        .arg(m_yield.passed)
+        .arg(m_yield.failed)
+        .arg(m_yield.stationErrors)
+        .arg(YieldReport::yieldText(m_yield));
 }
 
 void ResultsBrowser::showSelected()
@@ -340,15 +327,20 @@ void ResultsBrowser::showSelected()
     struct Loaded
     {
         std::optional<UnitRecord> record;
+        QVector<UnitRecord> earlier; // the serial's records before it
         QString error;
     };
     auto loaded = std::make_shared<Loaded>();
     m_results->run(
         this,
         [id, loaded](ResultDatabase* db) {
-            if (db)
-                loaded->record = ResultQueries(*db).load(id, &loaded->error);
-            else
+            if (db) {
+                const ResultQueries queries(*db);
+                loaded->record = queries.load(id, &loaded->error);
+                if (loaded->record)
+                    loaded->earlier = queries.earlierOf(*loaded->record, &loaded->error)
+                                          .value_or(QVector<UnitRecord>());
+            } else
                 loaded->error = tr("the results database is not open");
         },
         [this, id, loaded, generation] {
@@ -361,7 +353,8 @@ void ResultsBrowser::showSelected()
                 m_details->setPlainText(loaded->error);
             } else {
                 m_selected = loaded->record;
-                m_details->setHtml(CertificateHtml::html(*m_selected));
+                m_selectedEarlier = loaded->earlier;
+                m_details->setHtml(CertificateHtml::html(*m_selected, m_selectedEarlier));
                 m_certificate->setEnabled(true);
             }
             emit detailsShown();
@@ -380,7 +373,7 @@ bool ResultsBrowser::saveCertificate(const QString& path, QString* error)
                                            : tr("the unit's record is still being read");
         return false;
     }
-    return CertificatePdf::save(*m_selected, path, error);
+    return CertificatePdf::save(*m_selected, path, error, m_selectedEarlier);
 }
 
 void ResultsBrowser::chooseDatabase()

@@ -60,7 +60,7 @@ signals:
 
 private:
     QWidget* makeFilters();
-    void showFound(const QVector<UnitRecord>& units, const YieldReport::Earlier& earlier);
+    void showFound(const YieldReport::Tables& tables);
     void showSelected();
     void chooseDatabase();
     void chooseCsv();
@@ -71,8 +71,9 @@ private:
     bool m_open = false;
     int m_generation = 0; // answers for an earlier database or search are dropped
     QVector<UnitRecord> m_units;
-    std::optional<UnitRecord> m_selected; // the selected unit's whole record, once read
-    YieldReport::Earlier m_earlier;       // serials of the period tested before it
+    std::optional<UnitRecord> m_selected;  // the selected unit's whole record, once read
+    QVector<UnitRecord> m_selectedEarlier; // its serial's records before it
+    YieldRow m_yield;                      // the period's, over every recipe found
     QLineEdit* m_url = nullptr;
     QLineEdit* m_serial = nullptr;
     QLineEdit* m_recipe = nullptr;

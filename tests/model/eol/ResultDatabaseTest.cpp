@@ -94,6 +94,43 @@ TEST_F(ResultDatabaseTest, MigratesAnOlderDatabaseKeepingItsUnits)
     EXPECT_EQ(ResultQueries(*db).load(r.id, &error)->traffic, r.traffic);
 }
 
+// Schema 5 rebuilds SQLite's units table (a CHECK cannot be changed in place): the rows and
+// their children survive, the foreign keys still hold, and the new status is taken.
+TEST_F(ResultDatabaseTest, StationErrorsMigrationKeepsUnitsChildrenAndForeignKeys)
+{
+    QString error;
+    UnitRecord before = test::eolSampleUnit(QStringLiteral("SN-V3"));
+    {
+        auto old = open(3);
+        ASSERT_TRUE(old);
+        ResultStore store(*old);
+        ASSERT_TRUE(store.beginUnit(before, &error) && store.finishUnit(before, &error))
+            << error.toStdString();
+    }
+    auto db = open();
+    ASSERT_TRUE(db);
+    EXPECT_EQ(db->schemaVersion(), ResultSchema::currentVersion());
+    const auto kept = ResultQueries(*db).load(before.id, &error);
+    ASSERT_TRUE(kept) << error.toStdString();
+    EXPECT_EQ(kept->drives, before.drives);
+    EXPECT_EQ(kept->measurements, before.measurements);
+    EXPECT_EQ(kept->attempt, 0) << "recorded before attempts were counted";
+    EXPECT_EQ(scalar(*db, QStringLiteral("PRAGMA foreign_keys")).toInt(), 1);
+    EXPECT_FALSE(db->exec(QStringLiteral("INSERT INTO unit_drives VALUES ('no-such-unit', 0, 1,"
+                                         " 'DBU', 'dbu200', '1')"),
+                          &error))
+        << "a child of no unit is still refused";
+    UnitRecord r = test::eolSampleUnit(QStringLiteral("SN-ERR"), UnitStatus::Error);
+    r.failureReason = QStringLiteral("no drive answers at machine number 2");
+    ResultStore store(*db);
+    ASSERT_TRUE(store.beginUnit(r, &error) && store.finishUnit(r, &error)) << error.toStdString();
+    const auto loaded = ResultQueries(*db).load(r.id, &error);
+    ASSERT_TRUE(loaded) << error.toStdString();
+    EXPECT_EQ(loaded->status, UnitStatus::Error);
+    EXPECT_EQ(loaded->attempt, 1);
+    EXPECT_EQ(db->integrityCheck(), QStringLiteral("ok"));
+}
+
 TEST_F(ResultDatabaseTest, RefusesADatabaseNewerThanTheProgram)
 {
     {

@@ -111,6 +111,18 @@ TEST_F(ResultPostgresTest, MigratesRefusesNewerAndMarksInterrupted)
               1)
         << error.toStdString();
     EXPECT_EQ(ResultQueries(*db).load(r.id, &error)->status, UnitStatus::Interrupted);
+    // Schema 5 on PostgreSQL: the status CHECK takes station errors, attempts are counted.
+    for (UnitStatus status : {UnitStatus::Fail, UnitStatus::Error, UnitStatus::Pass}) {
+        UnitRecord u = test::eolSampleUnit(QStringLiteral("SN-PG-ATT"), status);
+        u.id.clear();
+        u.started = QDateTime();
+        ASSERT_TRUE(store.beginUnit(u, &error) && store.finishUnit(u, &error))
+            << error.toStdString();
+        const auto loaded = ResultQueries(*db).load(u.id, &error);
+        ASSERT_TRUE(loaded) << error.toStdString();
+        EXPECT_EQ(loaded->status, status);
+        EXPECT_EQ(loaded->attempt, status == UnitStatus::Fail ? 1 : 2); // the error is no attempt
+    }
     ASSERT_TRUE(
         db->exec(QStringLiteral("INSERT INTO schema_version VALUES (99, 'x', 'y')"), &error));
     EXPECT_FALSE(ResultDatabase::open(url, &error));

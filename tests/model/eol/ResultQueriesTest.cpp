@@ -134,6 +134,34 @@ TEST_F(ResultQueriesTest, HistoryOfASerialIsWholeAndLoadOfAnUnknownIdSaysSo)
     EXPECT_TRUE(error.contains(QLatin1String("nope")));
 }
 
+TEST_F(ResultQueriesTest, AttemptsCountTheSerialsVerdictsUnderItsRecipe)
+{
+    QString error;
+    const auto history = ResultQueries(*db).history(QStringLiteral("S2"), &error);
+    ASSERT_TRUE(history) << error.toStdString();
+    ASSERT_EQ(history->size(), 2);
+    EXPECT_EQ(history->at(0).attempt, 1);
+    EXPECT_EQ(history->at(1).attempt, 2); // after its fail
+    const auto h = ResultQueries(*db).serialHistory(QStringLiteral("S2"),
+                                                    history->at(0).recipeChecksum, &error);
+    ASSERT_TRUE(h) << error.toStdString();
+    EXPECT_EQ(h->verdicts, 2);
+    EXPECT_EQ(h->failures, 1);
+    EXPECT_TRUE(h->passedAny);
+    const auto other = ResultQueries(*db).serialHistory(QStringLiteral("S2"),
+                                                        QStringLiteral("sha256:other"), &error);
+    EXPECT_EQ(other->verdicts, 0); // attempts are per recipe version
+    EXPECT_TRUE(other->passedAny); // a pass is a pass under any recipe
+    // An aborted unit is no verdict: the next test of S5 is still its first.
+    const auto s5 = ResultQueries(*db).history(QStringLiteral("S5"), &error);
+    ASSERT_EQ(s5->size(), 1);
+    EXPECT_EQ(s5->at(0).attempt, 1);
+    const auto earlier = ResultQueries(*db).earlierOf(history->at(1), &error);
+    ASSERT_TRUE(earlier) << error.toStdString();
+    ASSERT_EQ(earlier->size(), 1);
+    EXPECT_EQ(earlier->at(0).status, UnitStatus::Fail);
+}
+
 TEST_F(ResultQueriesTest, TestedBeforeNamesTheRangesRetestsOnly)
 {
     ResultFilter f;
@@ -141,13 +169,17 @@ TEST_F(ResultQueriesTest, TestedBeforeNamesTheRangesRetestsOnly)
     QString error;
     const auto earlier = ResultQueries(*db).testedBefore(f, &error);
     ASSERT_TRUE(earlier) << error.toStdString();
-    EXPECT_EQ(*earlier, (YieldReport::Earlier{{QStringLiteral("pump"), QStringLiteral("S2")}}));
+    const QString sum = test::eolSampleUnit(QStringLiteral("x"), UnitStatus::Pass).recipeChecksum;
+    ASSERT_EQ(earlier->size(), 1);
+    EXPECT_EQ(earlier->value({sum, QStringLiteral("S2")}).verdicts, 1);
+    EXPECT_FALSE(earlier->value({sum, QStringLiteral("S2")}).passed);
     const auto units = ResultQueries(*db).find(f, &error);
     const auto rows = YieldReport::perRecipe(*units, *earlier);
     ASSERT_EQ(rows.size(), 2);
     EXPECT_EQ(rows[1].recipe, QStringLiteral("pump"));
-    EXPECT_EQ(rows[1].serials, 1); // S4 (running): S2's retest is not a first record
-    EXPECT_EQ(rows[1].firstPass, 0);
+    EXPECT_EQ(rows[1].serials, 0); // S2's retest is not a first test; S4 has no verdict yet
+    EXPECT_EQ(rows[1].passed, 1);
+    EXPECT_EQ(rows[1].running, 1);
     f.recipe = QStringLiteral("fan");
     EXPECT_TRUE(ResultQueries(*db).testedBefore(f, &error)->isEmpty());
     EXPECT_TRUE(ResultQueries(*db).testedBefore({}, &error)->isEmpty());

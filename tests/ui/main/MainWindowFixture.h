@@ -41,6 +41,7 @@
 #include <QTabWidget>
 #include <QTableView>
 #include <QTest>
+#include <QTime>
 #include <QTimer>
 #include <gtest/gtest.h>
 
@@ -101,6 +102,11 @@ protected:
     {
         QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
         QSettings().clear();
+        // One shift that began 6 h ago: a test near 06:00, 14:00 or 22:00 never sees the
+        // station's figures start a new shift under it.
+        QSettings().setValue(
+            QStringLiteral("eol/shifts"),
+            QTime::currentTime().addSecs(-6 * 3600).toString(QStringLiteral("HH:mm")));
         {
             // As opentop does (English too: its plural forms): before the window makes any text.
             QString error;

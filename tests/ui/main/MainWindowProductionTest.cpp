@@ -122,7 +122,12 @@ TEST_F(MainWindowProductionTest, AScannedSerialRunsTheUnitToPassAndNothingEditsM
     EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
         << qPrintable(view->reasonLabel()->text());
     EXPECT_GT(view->chart()->pointCount(), 5) << "the live speed was drawn";
-    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 1 · passed 1")))
+    EXPECT_TRUE(waitFor(
+        [&] {
+            return view->countersLabel()->text().startsWith(
+                QStringLiteral("This shift: tested 1 · passed 1"));
+        },
+        5000))
         << qPrintable(view->countersLabel()->text());
     ASSERT_EQ(view->unitsTable()->rowCount(), 1);
     EXPECT_EQ(view->unitsTable()->item(0, 1)->text(), QStringLiteral("SN-W1"));
@@ -305,7 +310,12 @@ TEST_F(MainWindowProductionTest,
         ASSERT_TRUE(history && history->size() == 1) << qPrintable(serial) << qPrintable(error);
         EXPECT_EQ(history->first().status, UnitStatus::Pass);
     }
-    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 2 · passed 2")))
+    EXPECT_TRUE(waitFor(
+        [&] {
+            return view->countersLabel()->text().startsWith(
+                QStringLiteral("This shift: tested 2 · passed 2"));
+        },
+        5000))
         << qPrintable(view->countersLabel()->text());
 }
 
@@ -353,7 +363,12 @@ TEST_F(MainWindowProductionTest,
     EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("next try at ")))
         << qPrintable(view->reasonLabel()->text());
     // The counters hold what the database holds.
-    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 0 ")))
+    EXPECT_TRUE(waitFor(
+        [&] {
+            return view->countersLabel()->text().startsWith(
+                QStringLiteral("This shift: tested 0 "));
+        },
+        5000))
         << qPrintable(view->countersLabel()->text());
     ASSERT_EQ(view->unitsTable()->rowCount(), 1);
     EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS, NOT RECORDED"));
@@ -376,7 +391,12 @@ TEST_F(MainWindowProductionTest,
     EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS"));
     EXPECT_TRUE(view->serialField()->isEnabled());
     EXPECT_FALSE(station->hasUnsavedResult());
-    EXPECT_TRUE(view->countersLabel()->text().startsWith(QStringLiteral("Tested 1 · passed 1")))
+    EXPECT_TRUE(waitFor(
+        [&] {
+            return view->countersLabel()->text().startsWith(
+                QStringLiteral("This shift: tested 1 · passed 1"));
+        },
+        5000))
         << qPrintable(view->countersLabel()->text());
     const auto database = ResultDatabase::open(url, &error);
     ASSERT_TRUE(database) << qPrintable(error);

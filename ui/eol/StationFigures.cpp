@@ -1,0 +1,41 @@
+#include "eol/StationFigures.h"
+
+#include "eol/EolStation.h"
+#include "eol/StationYield.h"
+#include "eol/YieldReport.h"
+
+#include <QDateTime>
+
+namespace opentop {
+
+StationFigures::StationFigures(EolStation* station, QWidget* parent)
+    : QLabel(parent)
+    , m_station(station)
+{
+    setObjectName(QStringLiteral("stationFigures"));
+    connect(m_station->yield(), &StationYield::changed, this, &StationFigures::refresh);
+    refresh();
+}
+
+void StationFigures::refresh()
+{
+    const StationYield* y = m_station->yield();
+    const YieldRow& r = y->row();
+    if (!y->known()) {
+        setText(tr("This shift: no figures yet (%1)")
+                    .arg(y->error().isEmpty() ? tr("results database not read") : y->error()));
+        return;
+    }
+    setText(tr("This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5")
+                .arg(r.verdicts)
+                .arg(r.passed)
+                .arg(r.failed)
+                .arg(r.stationErrors)
+                .arg(YieldReport::yieldText(r)));
+    setToolTip(tr("This station, this recipe version, since %1 (read %2). The same figures: %3")
+                   .arg(y->shiftStart().toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
+                        y->readAt().toLocalTime().toString(QStringLiteral("HH:mm:ss")),
+                        y->commandLine()));
+}
+
+} // namespace opentop
