@@ -7,6 +7,8 @@
 #include <QSet>
 #include <optional>
 
+class QSqlQuery;
+
 namespace opentop {
 
 class ResultDatabase;
@@ -38,6 +40,8 @@ public:
 
     // The units' own rows (no drives, values or traffic), oldest first. nullopt on an error.
     std::optional<QVector<UnitRecord>> find(const ResultFilter& filter, QString* error) const;
+    // Adds each unit's drives (model, variant and how it was known) to units `find` gave.
+    bool addDrives(QVector<UnitRecord>* units, QString* error) const;
     // One whole record; nullopt with *error when there is none or on an error.
     std::optional<UnitRecord> load(const QString& unitId, QString* error) const;
     // Every record of a serial number, whole, oldest first (a certificate, a trace).
@@ -50,6 +54,8 @@ public:
                                                               QString* error) const;
 
 private:
+    static UnitDrive driveFrom(const QSqlQuery& q, int first);
+
     ResultDatabase& database_;
 };
 

@@ -114,11 +114,13 @@ bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
             return false;
     }
     q.prepare(QStringLiteral("INSERT INTO unit_drives (unit_id, drive_index, machine_number, "
-                             "model, variant, firmware) VALUES (?, ?, ?, ?, ?, ?)"));
+                             "model, variant, firmware, variant_source, variant_proof)"
+                             " VALUES (?, ?, ?, ?, ?, ?, ?, ?)"));
     for (int i = 0; i < r.drives.size(); ++i) {
         const UnitDrive& d = r.drives[i];
         bind(q, {QVariant(r.id), QVariant(i), QVariant(d.machineNumber), QVariant(d.model),
-                 QVariant(d.variant), QVariant(d.firmware)});
+                 QVariant(d.variant), QVariant(d.firmware),
+                 QVariant(variantSourceName(d.variantSource)), QVariant(d.variantProof)});
         if (!run(q, error))
             return false;
     }
