@@ -62,9 +62,9 @@ void VariantProber::probe()
             }
             // The drive holds the probe value only if it took it: that proves as much as an
             // answer. Anything else is written back and proves nothing.
-            const ParameterMeta* meta = m_profile.parameter(m_probe.parameter);
+            const ParameterMeta* param = m_profile.parameter(m_probe.parameter);
             const ValueCodec::Encoded probeValue =
-                ValueCodec::encodeNumber(*meta, m_probe.value, m_session->context());
+                ValueCodec::encodeNumber(*param, m_probe.value, m_session->context());
             accepted(r.ok && r.value.registers == probeValue.registers);
         });
     });
