@@ -164,27 +164,34 @@ QHash<int, QString> CliContext::machineNames()
     return *m_machineNames;
 }
 
-QString CliContext::assignedVariant(int slave, const QString& family) const
+QString CliContext::fittingVariant(const QString& type, const QString& family)
 {
-    const ProfileRegistry& registry = ProfileRegistry::builtIn();
-    auto fits = [&](const QString& type) {
-        QString variant;
-        const Profile* p = registry.forDeviceType(type, &variant);
-        return p && p->family == family && !variant.isEmpty() ? variant : QString();
-    };
-    if (m_parser.isSet(QStringLiteral("variant"))) {
-        for (const QString& item :
-             m_parser.value(QStringLiteral("variant")).split(QLatin1Char(','))) {
-            const int eq = item.indexOf(QLatin1Char('='));
-            if (eq < 0) {
-                if (!fits(item.trimmed()).isEmpty())
-                    return fits(item.trimmed());
-            } else if (item.left(eq).trimmed().toInt() == slave) {
-                return fits(item.mid(eq + 1).trimmed());
-            }
+    QString variant;
+    const Profile* p = ProfileRegistry::builtIn().forDeviceType(type, &variant);
+    return p && p->family == family && !variant.isEmpty() ? variant : QString();
+}
+
+std::optional<QString> CliContext::givenVariant(int slave, const QString& family) const
+{
+    if (!m_parser.isSet(QStringLiteral("variant")))
+        return std::nullopt;
+    for (const QString& item : m_parser.value(QStringLiteral("variant")).split(QLatin1Char(','))) {
+        const int eq = item.indexOf(QLatin1Char('='));
+        if (eq < 0) {
+            if (!fittingVariant(item.trimmed(), family).isEmpty())
+                return fittingVariant(item.trimmed(), family);
+        } else if (item.left(eq).trimmed().toInt() == slave) {
+            return fittingVariant(item.mid(eq + 1).trimmed(), family);
         }
     }
-    return fits(m_simTypes.value(slave));
+    return std::nullopt;
+}
+
+QString CliContext::assignedVariant(int slave, const QString& family) const
+{
+    if (const std::optional<QString> given = givenVariant(slave, family))
+        return *given;
+    return fittingVariant(m_simTypes.value(slave), family);
 }
 
 DeviceInfo CliContext::identify(int slave)

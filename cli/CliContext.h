@@ -64,6 +64,9 @@ public:
     DeviceInfo identify(int slave);
     // The variant given for `slave` (--variant VARIANT or --variant ID=VARIANT,...).
     QString assignedVariant(int slave, const QString& family) const;
+    // The variant a person gave with --variant for this drive (never the simulator's): none
+    // when --variant names nothing for it; "" when it names a variant of another family.
+    std::optional<QString> givenVariant(int slave, const QString& family) const;
 
     // The bus the connection options name, as BusMemory keeps it ("serial:/dev/ttyUSB0"),
     // without opening it; empty with *error when the options are wrong or missing.
@@ -81,6 +84,8 @@ public:
 
     // The first wrong item of a --variant value (VARIANT or ID=VARIANT,...), empty when right.
     static QString variantError(const QString& text);
+    // `type` ("dbu400") as a variant of `family`, or "".
+    static QString fittingVariant(const QString& type, const QString& family);
     // True when the connection options were wrong or missing (the exit code is then 2).
     bool usageError() const { return m_usageError; }
 

@@ -7,9 +7,13 @@
 #include "ModbusClient.h"
 #include "eol/RecipeBuilder.h"
 #include "eol/RecipeFile.h"
+#include "eol/VariantCheck.h"
 #include "files/BackupReader.h"
 #include "files/OutputFile.h"
+#include "profile/Profile.h"
 #include "profile/ProfileRegistry.h"
+#include "session/DeviceInfo.h"
+#include "session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -47,8 +51,10 @@ QList<QCommandLineOption> EolRecipeCreateCommand::options() const
     };
 }
 
-std::optional<QVector<BackupDevice>>
-EolRecipeCreateCommand::readDrives(CliContext& context, const QVector<int>& ids, int* exitCode)
+std::optional<QVector<BackupDevice>> EolRecipeCreateCommand::readDrives(CliContext& context,
+                                                                        const QVector<int>& ids,
+                                                                        int* exitCode,
+                                                                        QStringList* notes)
 {
     QVector<BackupDevice> devices;
     for (int id : ids) {
@@ -59,6 +65,43 @@ EolRecipeCreateCommand::readDrives(CliContext& context, const QVector<int>& ids,
             *exitCode = ExitCommunication;
             return std::nullopt;
         }
+        // The golden unit's variant becomes the recipe's: read, proven by the probe, or given
+        // by its creator with --variant; never guessed.
+        const DeviceInfo info = context.identify(id);
+        const Profile& profile = session->profile();
+        VariantDecision::Evidence evidence;
+        if (const ProfileVariant* v = profile.variant(info.variant);
+            v && !v->nameMatch.isEmpty() && info.name.startsWith(v->nameMatch))
+            evidence.reported = info.variant;
+        evidence.asserted = context.givenVariant(id, profile.family).value_or(QString());
+        evidence.operatorName = qEnvironmentVariable("USER");
+        RecipePosition golden;
+        golden.machineNumber = id;
+        golden.family = profile.family;
+        golden.variantProof = QStringLiteral("required");
+        VariantCheck check(context.client(), profile, golden, evidence);
+        VariantDecision::Decision decision;
+        context.wait([&check, &decision](std::function<void()> finish) {
+            check.run([&decision, finish](const VariantDecision::Decision& d) {
+                decision = d;
+                finish();
+            });
+        });
+        if (!decision.ok) {
+            context.err() << tr("error: machine number %1: %2; give its variant with --variant "
+                                "%1=VARIANT if you know it; nothing written")
+                                 .arg(id)
+                                 .arg(decision.failure)
+                          << Qt::endl;
+            *exitCode = ExitInvalid;
+            return std::nullopt;
+        }
+        session->setVariant(decision.variant);
+        if (!decision.variant.isEmpty())
+            notes->append(
+                tr("machine number %1: %2, %3 (%4)")
+                    .arg(id)
+                    .arg(decision.variant, variantSourceName(decision.source), decision.proof));
         BackupReader reader(session);
         BackupReader::Result result;
         const bool completed = context.wait([&reader, &result](std::function<void()> finish) {
@@ -142,10 +185,16 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
             return usage(tr("--drives %1: %2").arg(parser.value(QStringLiteral("drives")), error));
         if (!context.connectBus())
             return ExitCommunication;
-        const std::optional<QVector<BackupDevice>> devices = readDrives(context, *ids, &code);
+        QStringList notes;
+        const std::optional<QVector<BackupDevice>> devices =
+            readDrives(context, *ids, &code, &notes);
         if (!devices)
             return code;
         recipe = builder.fromDevices(*devices, product, revision, &error);
+        // The recipe keeps how each variant was known when it was made.
+        if (recipe && !notes.isEmpty())
+            recipe->description =
+                tr("Made from a golden unit; variants: %1.").arg(notes.join(QStringLiteral("; ")));
     }
     if (!recipe) {
         context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;

@@ -27,9 +27,11 @@ public:
     int run(CliContext& context, const QStringList& args) override;
 
 private:
-    // The golden drives' settings read off the bus; nullopt (with *exitCode) when one failed.
-    static std::optional<QVector<BackupDevice>> readDrives(CliContext& context,
-                                                           const QVector<int>& ids, int* exitCode);
+    // The golden drives' settings read off the bus, each with its variant read, proven by the
+    // profile's probe or given with --variant (how, in `notes`); nullopt (with *exitCode) when
+    // one failed or its variant is not known.
+    static std::optional<QVector<BackupDevice>>
+    readDrives(CliContext& context, const QVector<int>& ids, int* exitCode, QStringList* notes);
 };
 
 } // namespace opentop

@@ -196,19 +196,23 @@ void EolResultsCommand::printUnits(CliContext& context, const QVector<UnitRecord
         return;
     }
     TextTable table({tr("started"), tr("serial"), tr("recipe"), tr("station"), tr("operator"),
-                     tr("verdict"), tr("time"), tr("reason")});
+                     tr("drives"), tr("verdict"), tr("time"), tr("reason")});
     for (const UnitRecord& u : units) {
         const QString seconds =
             u.ended.isValid()
                 ? QString::number(double(u.started.msecsTo(u.ended)) / 1000.0, 'f', 1) +
                       QStringLiteral(" s")
                 : QString();
+        QStringList drives;
+        for (const UnitDrive& d : u.drives)
+            drives << tr("%1: %2").arg(d.machineNumber).arg(CertificateHtml::variantText(d));
         table.addRow({localTime(u.started), u.serial,
                       tr("%1 rev. %2").arg(u.recipeName, u.recipeRevision), u.station,
-                      u.operatorName, CertificateHtml::verdictText(u.status), seconds,
+                      u.operatorName, drives.join(QStringLiteral("; ")),
+                      CertificateHtml::verdictText(u.status), seconds,
                       u.isPass() ? QString() : YieldReport::reasonOf(u)});
     }
-    table.setRightAligned(6);
+    table.setRightAligned(7);
     table.print(out);
     out << trn("%n unit(s)", int(units.size())) << Qt::endl;
 }
@@ -362,16 +366,23 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
         printYield(context, perRecipe, perShift);
         return ExitOk;
     }
-    const std::optional<QVector<UnitRecord>> units = ResultQueries(*db).find(*f, &error);
+    const ResultQueries queries(*db);
+    const std::optional<QVector<UnitRecord>> units = queries.find(*f, &error);
     if (!units) {
         context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
         return ExitCommunication;
     }
     if (csv)
         return output(context, ResultCsv::units(*units));
+    // Each drive's variant and how it was known (read, probed, confirmed, assumed).
+    QVector<UnitRecord> listed = *units;
+    if (!queries.addDrives(&listed, &error)) {
+        context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+        return ExitCommunication;
+    }
     if (context.json()) {
         QJsonArray array;
-        for (const UnitRecord& u : *units)
+        for (const UnitRecord& u : listed)
             array << UnitRecordJson::toJson(u);
         FileCommandSupport::printJson(context,
                                       {{QStringLiteral("command"), QStringLiteral("eol results")},
@@ -379,7 +390,7 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
                                        {QStringLiteral("units"), array}});
         return ExitOk;
     }
-    printUnits(context, *units);
+    printUnits(context, listed);
     return ExitOk;
 }
 

@@ -5,6 +5,7 @@
 #include "ExitCode.h"
 #include "ModbusClient.h"
 #include "eol/EolRun.h"
+#include "eol/Recipe.h"
 #include "eol/RecipeChecker.h"
 #include "eol/RecipeFile.h"
 #include "eol/ResultWriter.h"
@@ -79,8 +80,9 @@ void jsonLine(CliContext& context, QJsonObject object)
 
 QString EolRunCommand::synopsis() const
 {
-    return QStringLiteral("run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
-                          "[--units CSV] [--value ID:NAME=VALUE]... [--retest]");
+    return QStringLiteral(
+        "run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
+        "[--units CSV] [--value ID:NAME=VALUE]... [--variant VARIANT|ID=VARIANT,...] [--retest]");
 }
 
 QString EolRunCommand::summary() const
@@ -146,6 +148,41 @@ std::optional<QHash<int, QHash<QString, double>>> EolRunCommand::unitValues(CliC
     return values;
 }
 
+std::optional<QHash<int, QString>>
+EolRunCommand::assertedVariants(CliContext& context, const Recipe& recipe, QString* error)
+{
+    // --variant states what the drives of this unit are: taken as confirmed by the operator
+    // when a drive cannot prove its own, refused when it proves another; never outside the
+    // recipe.
+    QHash<int, QString> asserted;
+    const QString given = context.parser().value(QStringLiteral("variant"));
+    for (int i = 0; i < recipe.positions.size(); ++i) {
+        const RecipePosition& p = recipe.positions[i];
+        const std::optional<QString> variant = context.givenVariant(p.machineNumber, p.family);
+        if (!variant)
+            continue;
+        const QString where = Recipe::positionText(i, p.machineNumber);
+        if (variant->isEmpty() || (!p.variants.isEmpty() && !p.variants.contains(*variant))) {
+            *error = tr("--variant %1: %2 allows %3; nothing was sent")
+                         .arg(given, where,
+                              p.variants.isEmpty() ? tr("any %1 variant").arg(p.family)
+                                                   : p.variants.join(QStringLiteral(", ")));
+            return std::nullopt;
+        }
+        asserted.insert(p.machineNumber, *variant);
+    }
+    for (const QString& item : given.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const int eq = item.indexOf(QLatin1Char('='));
+        if (eq >= 0 && !recipe.position(item.left(eq).trimmed().toInt())) {
+            *error = tr("--variant %1: the recipe has no position at machine number %2; nothing "
+                        "was sent")
+                         .arg(given, item.left(eq).trimmed());
+            return std::nullopt;
+        }
+    }
+    return asserted;
+}
+
 int EolRunCommand::run(CliContext& context, const QStringList& args)
 {
     QTextStream& err = context.err();
@@ -175,6 +212,11 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     if (!values) {
         err << error << Qt::endl;
         return ExitInvalid;
+    }
+    const auto asserted = assertedVariants(context, *recipe, &error);
+    if (!asserted) {
+        err << error << Qt::endl;
+        return ExitUsage;
     }
 
     // As `eol results` reads it; the default file and its folder are made when missing.
@@ -267,6 +309,7 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     }
     options.recipeChecksum = checksum;
     options.unitValues = *values;
+    options.assertedVariants = *asserted;
     options.writer = &writer;
     options.traffic = context.trafficLog();
     EolRun eol(context.client(), ProfileRegistry::builtIn(), *recipe, options);

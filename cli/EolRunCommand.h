@@ -10,11 +10,11 @@ namespace opentop {
 class Recipe;
 
 // `eol run RECIPE --serial S [--operator O] [--station NAME] [--db URL] [--units CSV]
-// [--value ID:NAME=VALUE]...`: one unit through the end-of-line station (EolRun), recorded in
-// the results database. Progress as lines for people, or one JSON object per line (--json) for
-// a PLC or MES. Exit codes: 0 PASS, 5 FAIL, 3 recipe or unit values not valid (nothing sent),
-// 1 communication lost or results database unusable, 4 a motor not confirmed stopped,
-// 130 interrupted.
+// [--value ID:NAME=VALUE]... [--variant ...]`: one unit through the end-of-line station (EolRun),
+// recorded in the results database. Progress as lines for people, or one JSON object per line
+// (--json) for a PLC or MES. Exit codes: 0 PASS, 5 FAIL, 3 recipe or unit values not valid (nothing
+// sent), 1 communication lost or results database unusable, 4 a motor not confirmed stopped, 130
+// interrupted.
 class EolRunCommand : public EolSubcommand
 {
 public:
@@ -29,6 +29,10 @@ private:
     // message) when one is missing, malformed or not allowed.
     static std::optional<QHash<int, QHash<QString, double>>>
     unitValues(CliContext& context, const Recipe& recipe, const QString& serial, QString* error);
+    // The variants --variant states, by machine number; nothing (and a message) when one is not
+    // the recipe's.
+    static std::optional<QHash<int, QString>>
+    assertedVariants(CliContext& context, const Recipe& recipe, QString* error);
 };
 
 } // namespace opentop

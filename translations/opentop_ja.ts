@@ -260,187 +260,187 @@
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>top level</source>
         <translation>最上位</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="54"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="55"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; は 1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="66"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; は小文字の ID でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="72"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity は N、E、O のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="78"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud は 1200–115200、stopBits は 1 または 2 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="88"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats: &quot;%1&quot; は 8N1 や 8E1 のような形式ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="92"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats には既定の形式 %1 が含まれている必要があります</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="96"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="98"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs は 0–60000 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters は 1–125、maxWriteRegisters は 1–123 です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="113"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves は 1–247 の範囲でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] には id、model、label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot; が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="139"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="141"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] には一意の id と label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="150"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="152"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] には function 3 または 4 と first ≤ last が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
         <source>%1 has no name</source>
         <translation>%1 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="198"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset は %2 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="199"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: コード %2 が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot; はコマンドパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="220"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 初期値が許容値に含まれていません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="224"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: ビットフィールド &quot;%2&quot;: function &quot;%3&quot; は読出し可能なパラメータではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot; に対する条件です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2 のときは初期値が許容されません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="243"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 がアドレス 0xFFFF を超えています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 が 0x%3 で &quot;%2&quot; と重なっています（%4 レジスタ）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="270"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot; は identify の読出し範囲内のパラメータでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="273"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch が正しい正規表現ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="285"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="313"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 はパラメータ名、名前のリスト、またはオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="322"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot; にビットフィールド &quot;%3&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="328"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2 は &quot;%3&quot; で書き込める値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="346"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs には &quot;selected&quot; ロールが必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 には &quot;selected&quot; と &quot;maxSeconds&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="365"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2 は &quot;selected&quot; ロールの値ではないか、重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="370"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot; は 0 より大きく 600 以下でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="402"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot; は %2 のいずれかで、それぞれ 1 回だけでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="405"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot; は #rrggbb でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot; と &quot;meaning&quot; は空にできません</translation>
     </message>
@@ -2391,7 +2391,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
@@ -2432,7 +2432,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
@@ -2458,12 +2458,12 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Attempt</source>
         <translation>試験回数</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>%1 回目（このレシピでのこのシリアルの試験）</translation>
     </message>
@@ -2474,7 +2474,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
@@ -2506,137 +2506,178 @@ Drives: %5</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Variant</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <source>How known</source>
+        <translation>確認方法</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>Read back</source>
         <translation>読み戻し</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>Verified</source>
         <translation>照合</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>already set</source>
         <translation>設定済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
         <source>NO</source>
         <translation>いいえ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Measurements</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Step</source>
         <translation>ステップ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Quantity</source>
         <translation>測定項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Limits</source>
         <translation>規格値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>Earlier tests of this serial</source>
         <translation>このシリアルの過去の試験</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="139"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="154"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後のバス通信</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="169"/>
+        <source>read from the drive</source>
+        <translation>ドライバから読出し</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="171"/>
+        <source>proven by the variant probe</source>
+        <translation>機種判定で確認済み</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="173"/>
+        <source>confirmed by a person</source>
+        <translation>担当者が確認</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="175"/>
+        <source>ASSUMED, not proven</source>
+        <translation>推定（未確認）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="179"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="185"/>
+        <source>not known</source>
+        <translation>不明</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="187"/>
+        <source>%1 (assumed)</source>
+        <translation>%1（推定）</translation>
     </message>
 </context>
 <context>
@@ -2763,32 +2804,32 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="224"/>
+        <location filename="../cli/CliContext.cpp" line="231"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="229"/>
+        <location filename="../cli/CliContext.cpp" line="236"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="287"/>
+        <location filename="../cli/CliContext.cpp" line="294"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="291"/>
+        <location filename="../cli/CliContext.cpp" line="298"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="309"/>
+        <location filename="../cli/CliContext.cpp" line="316"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="319"/>
+        <location filename="../cli/CliContext.cpp" line="326"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -2824,6 +2865,19 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../model/profile/CodeTable.cpp" line="29"/>
         <source>What to do: %1</source>
         <translation>対処: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CommLossArm</name>
+    <message>
+        <location filename="../model/eol/CommLossArm.cpp" line="29"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 を読み取れません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CommLossArm.cpp" line="40"/>
+        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
+        <translation>通信途絶停止を有効にできません（%1 = %2 s）: %3。これなしではモーターを起動しません</translation>
     </message>
 </context>
 <context>
@@ -4856,137 +4910,117 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="60"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="53"/>
         <source>identifying</source>
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
         <source>no drive answers at machine number %1</source>
         <translation>局番 %1 で応答するドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="77"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>局番 %1 のドライバを識別できません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="91"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="90"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 ドライバですが、レシピには %2 ドライバが必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
-        <source>the drive does not report its variant and the recipe allows %1</source>
-        <translation>ドライバが機種を通知しません。レシピで許可されているのは %1 です</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
-        <source>variant %1, the recipe allows %2</source>
-        <translation>機種 %1、レシピで許可されているのは %2 です</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>ファームウェア %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="95"/>
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="116"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
         <source>no profile for the family %1</source>
         <translation>ファミリ %1 のプロファイルがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="162"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="183"/>
         <source>cannot read whether the motor runs or an alarm is active: %1</source>
         <translation>モータが運転中か、アラームが発生しているかを読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="163"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="184"/>
         <source>no answer</source>
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="170"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="191"/>
         <source>its motor was running before the test</source>
         <translation>試験前からモータが運転していました</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="171"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="192"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>試験前にモータがすでに運転しています（中断された実行の残り？）。何も書き込んでいません: 先に停止してください（全停止、またはドライバ側で）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="178"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="199"/>
         <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
         <translation>試験前からアラームが発生しています（前の製品の残り？）。何も書き込んでいません: アラームをリセットして再試験してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="188"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>writing the settings</source>
         <translation>設定を書込み中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="230"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="251"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="237"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="258"/>
         <source>writing the settings: %1</source>
         <translation>設定の書込み: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="245"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>reading every setting back</source>
         <translation>全設定を読み戻し中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="260"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="281"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 を読み戻せません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="287"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 が値を保持しません: %2 に設定、読出し値 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="291"/>
         <source>verifying the settings: %1</source>
         <translation>設定の照合: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="284"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="305"/>
         <source>arming the communication-loss stop</source>
         <translation>通信途絶停止を有効化中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="289"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 を読み取れません: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="302"/>
-        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
-        <translation>通信途絶停止を有効にできません（%1 = %2 s）: %3。これなしではモーターを起動しません</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="334"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="319"/>
         <source>testing</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="338"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="323"/>
         <source>step %1 of %2: %3</source>
         <translation>ステップ %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="401"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="386"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -5064,143 +5098,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="31"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="35"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>マスター品からレシピを作成します: バックアップファイルまたはバス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="37"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="41"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: マスター品のバックアップファイル。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: バス上のマスター品のドライバ。例: 1,2（接続オプションと併用）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 製品名。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: レシピのリビジョン。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 既存のレシピファイルを置き換えます。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="151"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="64"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
+        <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
+        <translation>エラー: 局番 %1: %2。機種が分かっていれば --variant %1=機種 で指定してください。何も書き込んでいない</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="102"/>
+        <source>machine number %1: %2, %3 (%4)</source>
+        <translation>局番 %1: %2、%3（%4）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="79"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="122"/>
         <source>error: %1: cannot read %2</source>
         <translation>エラー: %1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="82"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>エラー: %1 にプロファイルで許可されていない値があります: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="128"/>
         <source>nothing written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>%1: %2 settings read</source>
         <translation>%1: %2 個の設定を読出し</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="144"/>
         <source>error: %1; usage: eol %2</source>
         <translation>エラー: %1。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="148"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>予期しない引数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="152"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE または --drives LIST のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="113"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="156"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME で製品名を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV でレシピのリビジョンを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE で書き込むレシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="121"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="164"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>エラー: %1 は既に存在します。置き換えるには --force を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="168"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="142"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="197"/>
+        <source>Made from a golden unit; variants: %1.</source>
+        <translation>マスター品から作成。機種: %1。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="224"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 を書き込みました: %2 リビジョン %3、%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="182"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>エラー: レシピが &quot;eol recipe check&quot; に合格しません: 修正してから &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
@@ -5421,298 +5470,309 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="73"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>結果データベースの製品と直行率を一覧表示、または CSV でエクスポートします</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>結果データベース: SQLite ファイル、sqlite:PATH、または postgresql://user@host/db（既定: OPENTOP_EOL_DB、なければ ~/.local/share/opentop/results.db）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results: このシリアル番号のみ。* または ? を含むと大文字小文字を区別しないパターン（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 以降に開始したもの（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <location filename="../cli/EolResultsCommand.cpp" line="90"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
         <source>results: started before T.</source>
         <translation>results: T より前に開始したもの。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: このレシピ（製品名）のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>results: only this station.</source>
         <translation>results: このステーションのみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only the newest N units.</source>
         <translation>results: 最新の N 台のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="102"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV (RFC 4180) を標準出力または -o FILE に出力します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="107"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: シフトの開始時刻（ローカル時刻、既定 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="140"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; は時刻ではありません。2026-11-24、2026-11-24T06:00（ローカル時刻、または Z や +01:00 付き）、8h、2d、today、yesterday のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="150"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="171"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 が --until %2 より前ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
         <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
         <translation>results: このバージョンのレシピのみ（eol recipe check が表示するチェックサムで指定）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="95"/>
         <source>SUM</source>
         <translation>SUM</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="97"/>
         <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
         <translation>results: pass、fail、error（ステーションエラー）、interrupted、aborted、running のいずれか。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="104"/>
         <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
         <translation>results: レシピバージョン別・シフト別の直行率、2 回目までの合格率、最終合格率と不合格理由。ステーションエラーと中止は歩留まりに含めません。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="177"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass、fail、error、interrupted、aborted、running のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="185"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 製品の台数を 1 以上で指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="222"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="195"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
         <source>no unit matches</source>
         <translation>該当する製品はありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>reason</source>
         <translation>理由</translation>
     </message>
     <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <source>drives</source>
+        <translation>ドライバ</translation>
+    </message>
+    <message>
         <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="231"/>
         <source>shift</source>
         <translation>シフト</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>serials</source>
         <translation>シリアル数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>first pass</source>
         <translation>初回合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>second pass</source>
         <translation>2 回目までに合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>last pass</source>
         <translation>最終合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>failed</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>station errors</source>
         <translation>ステーションエラー</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="250"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="253"/>
         <source>Yield per recipe version (station errors and aborts are not counted)</source>
         <translation>レシピバージョン別の歩留まり（ステーションエラーと中止は含めない）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="258"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="261"/>
         <source>%1: checksum %2</source>
         <translation>%1: チェックサム %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>not finished</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="259"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="262"/>
         <source>Per shift</source>
         <translation>シフト別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
         <source>Failure reasons</source>
         <translation>不合格理由</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="274"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="277"/>
         <source>Station errors (not counted in yield)</source>
         <translation>ステーションエラー（歩留まりに含めない）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="294"/>
         <source>wrote %1</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="303"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>エラー: 予期しない引数 &quot;%1&quot;。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="306"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="309"/>
         <source>error: give --csv or --json, not both</source>
         <translation>エラー: --csv と --json は同時に指定できません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="310"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="313"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>エラー: -o は CSV ファイルを指定します。--csv も指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="318"/>
         <source>error: --shifts is for --yield</source>
         <translation>エラー: --shifts は --yield 用です</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="325"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="328"/>
         <source>error: --shifts %1: %2</source>
         <translation>エラー: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="343"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="369"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="345"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="372"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="380"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
@@ -5730,48 +5790,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>結果データベースに製品を記録できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="94"/>
+        <location filename="../model/eol/EolRun.cpp" line="96"/>
         <source>the recipe has no drives</source>
         <translation>レシピにドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="109"/>
         <source>the recipe is not valid: %1</source>
         <translation>レシピが無効です: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="112"/>
+        <location filename="../model/eol/EolRun.cpp" line="114"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: この製品の %2 の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="130"/>
+        <location filename="../model/eol/EolRun.cpp" line="132"/>
         <source>cancelled by the operator</source>
         <translation>作業者によるキャンセル</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="141"/>
+        <location filename="../model/eol/EolRun.cpp" line="143"/>
         <source>the connection was lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="149"/>
-        <location filename="../model/eol/EolRun.cpp" line="157"/>
+        <location filename="../model/eol/EolRun.cpp" line="151"/>
+        <location filename="../model/eol/EolRun.cpp" line="159"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="154"/>
+        <location filename="../model/eol/EolRun.cpp" line="156"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="194"/>
+        <location filename="../model/eol/EolRun.cpp" line="196"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="203"/>
+        <location filename="../model/eol/EolRun.cpp" line="205"/>
         <source>recording the result</source>
         <translation>結果を記録しています</translation>
     </message>
@@ -5779,179 +5839,194 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="88"/>
+        <location filename="../cli/EolRunCommand.cpp" line="90"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>Who tests it (default: the login name).</source>
         <translation>試験者（既定: ログイン名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="101"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>レシピの規則で止められる再試験（合格済みのシリアル、または試験回数を使い切ったもの）を技術者が許可します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="141"/>
+        <location filename="../cli/EolRunCommand.cpp" line="143"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="154"/>
+        <location filename="../cli/EolRunCommand.cpp" line="166"/>
+        <source>--variant %1: %2 allows %3; nothing was sent</source>
+        <translation>--variant %1: %2 が許可するのは %3。何も送信していない</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="168"/>
+        <source>any %1 variant</source>
+        <translation>%1 の全機種</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="177"/>
+        <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
+        <translation>--variant %1: レシピに局番 %2 の位置がない。何も送信していない</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="191"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="169"/>
+        <location filename="../cli/EolRunCommand.cpp" line="206"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="195"/>
+        <location filename="../cli/EolRunCommand.cpp" line="237"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="199"/>
+        <location filename="../cli/EolRunCommand.cpp" line="241"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="204"/>
+        <location filename="../cli/EolRunCommand.cpp" line="246"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="223"/>
+        <location filename="../cli/EolRunCommand.cpp" line="265"/>
         <source>error: %1; nothing was sent</source>
         <translation>エラー: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <location filename="../cli/EolRunCommand.cpp" line="267"/>
         <source>a technician allows it with --retest</source>
         <translation>技術者は --retest で許可できます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="271"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注: %1。--retest の許可により再試験します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="231"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="250"/>
+        <location filename="../cli/EolRunCommand.cpp" line="292"/>
         <source>station: %1</source>
         <translation>ステーション: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="254"/>
+        <location filename="../cli/EolRunCommand.cpp" line="296"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="291"/>
-        <location filename="../cli/EolRunCommand.cpp" line="312"/>
+        <location filename="../cli/EolRunCommand.cpp" line="334"/>
+        <location filename="../cli/EolRunCommand.cpp" line="355"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="360"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="360"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="335"/>
+        <location filename="../cli/EolRunCommand.cpp" line="378"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="366"/>
+        <location filename="../cli/EolRunCommand.cpp" line="409"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="368"/>
+        <location filename="../cli/EolRunCommand.cpp" line="411"/>
         <source>attempt %1</source>
         <translation>%1 回目の試験</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="418"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="377"/>
+        <location filename="../cli/EolRunCommand.cpp" line="420"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="382"/>
+        <location filename="../cli/EolRunCommand.cpp" line="425"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -5983,83 +6058,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="168"/>
+        <location filename="../model/eol/EolStation.cpp" line="170"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="165"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="169"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>接続できません（%1）。自動で再試行中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="176"/>
+        <location filename="../model/eol/EolStation.cpp" line="178"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="180"/>
+        <location filename="../model/eol/EolStation.cpp" line="182"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="185"/>
+        <location filename="../model/eol/EolStation.cpp" line="187"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="192"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="198"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="202"/>
-        <location filename="../model/eol/EolStation.cpp" line="246"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="206"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="210"/>
+        <location filename="../model/eol/EolStation.cpp" line="212"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="228"/>
+        <location filename="../model/eol/EolStation.cpp" line="230"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="250"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>ステーションのドライブが安全ではありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="311"/>
+        <location filename="../model/eol/EolStation.cpp" line="313"/>
         <source>no unit was started yet</source>
         <translation>まだ試験を開始した製品がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="323"/>
+        <location filename="../model/eol/EolStation.cpp" line="325"/>
         <source>cancelled before it started</source>
         <translation>開始前に取り消されました</translation>
     </message>
@@ -9680,162 +9755,162 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="300"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
         <source>another</source>
         <translation>別のユニット</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="334"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="485"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="490"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
     </message>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="177"/>
         <location filename="../ui/eol/ProductionView.cpp" line="184"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="356"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="353"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
         <source>Unit %1 — attempt %2</source>
         <translation>製品 %1 — %2 回目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="382"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1、未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="397"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（このステーションに保管）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="414"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="419"/>
         <source>NOT RECORDED</source>
         <translation>未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="436"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="457"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
         <source>STATION ERROR</source>
         <translation>ステーションエラー</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="464"/>
         <source>%1
 Not a verdict on the unit: fix the cause and test it again.</source>
         <translation>%1
 製品の判定ではありません。原因を取り除いてから再試験してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="477"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="476"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
         <source>it does not answer</source>
         <translation>データベースが応答しません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="479"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="484"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
     </message>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="192"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="437"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="385"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="455"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="415"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="454"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="453"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="467"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="388"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="394"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -9847,37 +9922,37 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="427"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で JSON が不正です: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="431"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="442"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="453"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>must be an object</source>
         <translation>オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
         <source>name repeated</source>
         <translation>名前が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="464"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="468"/>
         <source>texts: {setting:…} names no parameter (%1)</source>
         <translation>texts: {setting:…} が指すパラメータがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="477"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 開けません: %2</translation>
     </message>
@@ -10218,110 +10293,120 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>%1: 機種 &quot;%2&quot; が 2 回指定されています</translation>
     </message>
     <message>
+        <location filename="../model/eol/RecipeChecker.cpp" line="157"/>
+        <source>%1: variantProof &quot;%2&quot; is not known; use &quot;required&quot; or &quot;operator&quot; (or leave it out)</source>
+        <translation>%1: variantProof「%2」は不明。&quot;required&quot; か &quot;operator&quot; を使用（または省略）</translation>
+    </message>
+    <message>
         <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
+        <source>%1: variantProof &quot;operator&quot; needs exactly one allowed variant for the operator to confirm</source>
+        <translation>%1: variantProof &quot;operator&quot; には作業者が確認する許可機種がちょうど 1 つ必要</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeChecker.cpp" line="174"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1: ファームウェアバージョン &quot;%2&quot; はドライバが通知する形式ではありません（major.minor、例: &quot;1.5&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="175"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="187"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 に設定 &quot;%2&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="177"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="189"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 はレシピで書き込める設定ではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="179"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="191"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 はドライバの通信方法を決める設定です。レシピでは変更できません（変更すると、実行中にステーションがドライバを見失います）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="199"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="211"/>
         <source>%1: setting %2</source>
         <translation>%1: 設定 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="204"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="269"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="216"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="210"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="222"/>
         <source>%1 is given twice</source>
         <translation>%1 が 2 回指定されています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="230"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1: 許容値は %2 に依存しますが、レシピで設定されていません。%2 を設定に追加してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="227"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="239"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 は %2 の許容値を決めます。%2 もレシピで設定してください。設定しないと、ドライバに無効な値が残る可能性があります</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="243"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="311"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="255"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="323"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1: 単位が &quot;%2&quot; ですが、ドライバの値の単位は &quot;%3&quot; です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="366"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="276"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 個別値 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="275"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="287"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 が 2 回指定されています（設定または個別値として）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="293"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1: 範囲の最小値 %2 が最大値 %3 を超えています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="302"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1: 許容値は %2 に依存しますが、レシピで設定されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="309"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 は数値ではありません。個別値には数値の設定が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="315"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="327"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 範囲 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 はドライバの許容範囲外です: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="345"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 にドライバで許可されていない値が含まれています。許容値: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="359"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 個別値 %2: %3%4 はレシピの範囲 %5–%6%4 外です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="370"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="382"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: レシピに個別値 %2 はありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="373"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>レシピに局番 %1 のドライバはありません</translation>
     </message>
@@ -10548,12 +10633,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="263"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 は %2 MB を超えています（レシピファイルの上限）。レシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="270"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="271"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -10665,112 +10750,112 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../model/eol/RecipeParser.cpp" line="134"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="211"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="178"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="179"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot; は数値またはテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="194"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="195"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot; は &quot;%3&quot; ではなく &quot;csv&quot; または &quot;operator&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="207"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なステップタイプ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="221"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="222"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot; は運転データ番号（例: 2）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="234"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="235"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot; は &quot;cw&quot; または &quot;ccw&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="278"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="279"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1: &quot;equals&quot; または規格値のいずれか一方を指定してください（両方は不可）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="284"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="285"/>
         <source>%1: unknown step</source>
         <translation>%1: 不明なステップ</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="300"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1: &quot;unit&quot; はテキストでなければなりません（単位のない値は &quot;&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="303"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="304"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1: 規格値には &quot;lower&quot;、&quot;upper&quot;、またはその両方が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="312"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="313"/>
         <source>&quot;retest&quot; must be an object</source>
         <translation>&quot;retest&quot; はオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="321"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="322"/>
         <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
         <translation>retest: &quot;maxAttempts&quot; は 0（制限なし）から 100 までの整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="331"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="332"/>
         <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
         <translation>retest: &quot;passedSerial&quot; は &quot;%1&quot; ではなく technician、refuse、allow のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="343"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 不明なキー &quot;%2&quot;。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="357"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; は空でないテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="359"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; はテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot; はテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="373"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="374"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot; は空でないテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot; は数値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="409"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="410"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="412"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="413"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; のエントリが %3 個あります。最大 %4 個までです</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="418"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="419"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: すべてのエントリはオブジェクトでなければなりません</translation>
     </message>
@@ -12155,7 +12240,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="152"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="202"/>
         <source>no unit record %1</source>
         <translation>製品の記録 %1 がありません</translation>
     </message>
@@ -12163,12 +12248,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="200"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="206"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果データベースのスキーマバージョン %1 は、このプログラムが対応するバージョン (%2) より新しいです: このステーションの OpenTOP を更新してください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="235"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="241"/>
         <source>the migration left a record pointing at no unit (table %1)</source>
         <translation>マイグレーション後、どの製品も指していない記録が残っています（テーブル %1）</translation>
     </message>
@@ -12218,22 +12303,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>製品にはシリアル番号が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="178"/>
+        <location filename="../model/eol/ResultStore.cpp" line="190"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>製品の終了は pass、fail、error、aborted のいずれかで、%1 は使えません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="208"/>
+        <location filename="../model/eol/ResultStore.cpp" line="220"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>製品 %1（シリアル %2）は結果データベースで開始されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="210"/>
+        <location filename="../model/eol/ResultStore.cpp" line="222"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>製品 %1（シリアル %2）はすでに %3 として記録されています。その記録を保持します</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="233"/>
+        <location filename="../model/eol/ResultStore.cpp" line="244"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>製品 %1（シリアル %2）は結果データベースで実行中ではありません: 開始されていないか、すでに終了または中断としてマークされています</translation>
     </message>
@@ -12441,7 +12526,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="345"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="344"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>
@@ -12464,7 +12549,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="372"/>
         <source>no unit is selected</source>
         <translation>製品が選択されていません</translation>
     </message>
@@ -12474,49 +12559,49 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>製品 %1 を読み出しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="374"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>製品の記録をまだ読み出しています</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="382"/>
         <source>Open results database</source>
         <translation>結果データベースを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="384"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite データベース (*.db *.sqlite);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
         <source>Export units as CSV</source>
         <translation>製品を CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="399"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>製品 %n 台を %1 に書き込みました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="409"/>
         <source>Save certificate</source>
         <translation>検査成績書を保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="411"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF ファイル (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
         <source>Certificate written to %1</source>
         <translation>検査成績書を %1 に書き込みました</translation>
     </message>
@@ -14461,12 +14546,12 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationAlarmReset</name>
     <message>
-        <location filename="../model/eol/StationAlarmReset.cpp" line="55"/>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
         <source>machine number %1: not connected to a bus</source>
         <translation>局番 %1: バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="57"/>
         <source>machine number %1 is not a position of the recipe</source>
         <translation>局番 %1 はレシピの位置にありません</translation>
     </message>
@@ -17051,27 +17136,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="106"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="113"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>製品の記録ではありません（format が &quot;%1&quot; ではありません）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="109"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>製品記録のバージョン %1 はこのプログラムでは不明です（%2 まで読込み可能）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="123"/>
         <source>the unit record has no serial number</source>
         <translation>製品記録にシリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="128"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="135"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>不明な製品ステータス &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="173"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="149"/>
+        <source>unknown variant source &quot;%1&quot;</source>
+        <translation>不明な機種の確認方法「%1」</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="188"/>
         <source>not JSON: %1</source>
         <translation>JSON ではありません: %1</translation>
     </message>
@@ -17308,6 +17398,77 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::VariantCheck</name>
+    <message>
+        <location filename="../model/eol/VariantCheck.cpp" line="23"/>
+        <source>proving the variant (%1)</source>
+        <translation>機種を確認中（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantDecision</name>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="39"/>
+        <source>the variant probe left the drive changed: %1</source>
+        <translation>機種判定でドライバが変更されたままになった: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="44"/>
+        <source>reported by the drive</source>
+        <translation>ドライバが応答</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="53"/>
+        <source>%1; named by %2</source>
+        <translation>%1、%2 が指定</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="57"/>
+        <source>given for the unit by %1 (eol run --variant)</source>
+        <translation>%1 がこの製品に指定（eol run --variant）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="62"/>
+        <source>confirmed by the operator %1 (the recipe asks the operator)</source>
+        <translation>作業者 %1 が確認（レシピが作業者の確認を求める）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="67"/>
+        <source>the recipe&apos;s only variant, not proven on the bus</source>
+        <translation>レシピの唯一の機種、バス上では未確認</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="74"/>
+        <source>the family has no variant probe</source>
+        <translation>このシリーズには機種判定がない</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="76"/>
+        <source>the probe leaves %1 (%2)</source>
+        <translation>判定結果は %1 のいずれか（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="81"/>
+        <source>the drive does not report its variant and it was not proven (%1)</source>
+        <translation>ドライバは機種を応答せず、確認もできなかった（%1）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="82"/>
+        <source>the drive does not report its variant and it was not proven (%1); the recipe allows %2 and needs proof</source>
+        <translation>ドライバは機種を応答せず、確認もできなかった（%1）。レシピは %2 を許可し、確認を必要とする</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="90"/>
+        <source>the drive is a %1 (%2), but %3 was given for it</source>
+        <translation>ドライバは %1（%2）だが、%3 が指定された</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="93"/>
+        <source>a %1 (%2), the recipe allows %3</source>
+        <translation>%1（%2）、レシピが許可するのは %3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::VariantNeed</name>
     <message>
         <location filename="../model/bus/VariantNeed.cpp" line="19"/>
@@ -17358,6 +17519,72 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/bus/VariantNeed.cpp" line="112"/>
         <source>Last time on this bus it was set as %1.</source>
         <translation>前回このバスでは %1 に設定されていました。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantProbe</name>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="51"/>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>不明なキー「%1」</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="58"/>
+        <source>needs &quot;parameter&quot;, a number &quot;value&quot; and &quot;refusedCode&quot;</source>
+        <translation>&quot;parameter&quot;、数値の &quot;value&quot; と &quot;refusedCode&quot; が必要</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="63"/>
+        <source>no parameter &quot;%1&quot;</source>
+        <translation>パラメータ「%1」がない</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="67"/>
+        <source>%1 must be a readable, writable setting that no role names (never a command or a motion register)</source>
+        <translation>%1 は読出し・書込みでき、どの役割にも使われていない設定であること（コマンドや運転レジスタは不可）</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="77"/>
+        <source>%1 = %2 must be allowed on some variants and refused on others</source>
+        <translation>%1 = %2 は一部の機種で許可され、他の機種で拒否される値であること</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantProber</name>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="30"/>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 を読み出せない: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="59"/>
+        <source>the probe %1 was not answered as the manual says: %2</source>
+        <translation>機種判定 %1 への応答がマニュアルどおりでない: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="83"/>
+        <source>%1 could not be set back to %2 after the variant probe (%3): set it to %2 before this drive is used</source>
+        <translation>機種判定の後、%1 を %2 に戻せなかった（%3）: このドライバを使う前に %2 に設定してください</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="88"/>
+        <source>%1 accepted, %2 written back</source>
+        <translation>%1 を受付、%2 に書き戻し済み</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="96"/>
+        <source>%1 refused (%2)</source>
+        <translation>%1 を拒否（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="106"/>
+        <source>%1 does not read back as %2 after the variant probe (%3): set it to %2 before this drive is used</source>
+        <translation>機種判定の後、%1 の読出し値が %2 でない（%3）: このドライバを使う前に %2 に設定してください</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="113"/>
+        <source>the probe did not decide</source>
+        <translation>判定できなかった</translation>
     </message>
 </context>
 <context>

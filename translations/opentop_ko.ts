@@ -260,187 +260,187 @@
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>top level</source>
         <translation>최상위</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="54"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="55"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot;는 1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="66"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot;는 소문자 ID여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="72"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity는 N, E, O 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="78"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud는 1200–115200, stopBits는 1 또는 2여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="88"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats: &quot;%1&quot;은(는) 8N1, 8E1 같은 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="92"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats에 기본 형식 %1이(가) 있어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="96"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="98"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs는 0–60000이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters는 1–125, maxWriteRegisters는 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="113"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves는 1–247 범위여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1]에는 id, model, label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot;가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="139"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="141"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1]에는 고유한 id와 label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="150"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="152"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1]에는 function 3 또는 4와 first ≤ last가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
         <source>%1 has no name</source>
         <translation>%1에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="198"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset은 %2 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="199"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: 코드 %2가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1: storeWith &quot;%2&quot;은(는) 명령 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="220"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1: 기본값이 허용 값에 포함되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="224"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1: 비트 필드 &quot;%2&quot;: 기능 &quot;%3&quot;은(는) 읽을 수 있는 파라미터가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;에 대한 조건</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1: %2일 때는 기본값이 허용되지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="243"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1이(가) 주소 0xFFFF를 넘어갑니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1이(가) 0x%3에서 &quot;%2&quot;와(과) 겹칩니다(레지스터 %4개)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="270"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify: &quot;%1&quot;은(는) identify 읽기 범위 안의 파라미터여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="273"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch가 올바른 정규식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="285"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="313"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1은(는) 파라미터 이름, 이름 목록 또는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="322"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot;에 비트 필드 &quot;%3&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="328"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="346"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs에는 &quot;selected&quot; 역할이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1에는 &quot;selected&quot;와 &quot;maxSeconds&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="365"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2은(는) &quot;selected&quot; 역할의 값이 아니거나 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="370"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot;는 0보다 크고 600 이하여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="402"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot;는 %2 중 하나여야 하며 각각 한 번만 쓸 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="405"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot;는 #rrggbb 형식이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot;과 &quot;meaning&quot;은 비어 있으면 안 됩니다</translation>
     </message>
@@ -2391,7 +2391,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
@@ -2432,7 +2432,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
@@ -2458,12 +2458,12 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Attempt</source>
         <translation>검사 회차</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>%1회차 (이 레시피에서 이 시리얼의 검사 차수)</translation>
     </message>
@@ -2474,7 +2474,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
@@ -2506,137 +2506,178 @@ Drives: %5</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Variant</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <source>How known</source>
+        <translation>확인 방법</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Written</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>Read back</source>
         <translation>다시 읽은 값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>Verified</source>
         <translation>검증</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>already set</source>
         <translation>이미 설정됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
         <source>yes</source>
         <translation>예</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
         <source>NO</source>
         <translation>아니요</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Measurements</source>
         <translation>측정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Step</source>
         <translation>단계</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Quantity</source>
         <translation>측정 항목</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Limits</source>
         <translation>한계값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>pass</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>Earlier tests of this serial</source>
         <translation>이 시리얼의 이전 검사</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="139"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="154"/>
         <source>Bus traffic around the failure</source>
         <translation>불합격 전후의 버스 통신</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="169"/>
+        <source>read from the drive</source>
+        <translation>드라이버에서 읽음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="171"/>
+        <source>proven by the variant probe</source>
+        <translation>기종 확인으로 입증됨</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="173"/>
+        <source>confirmed by a person</source>
+        <translation>사람이 확인함</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="175"/>
+        <source>ASSUMED, not proven</source>
+        <translation>추정, 확인되지 않음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="179"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="185"/>
+        <source>not known</source>
+        <translation>알 수 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="187"/>
+        <source>%1 (assumed)</source>
+        <translation>%1 (추정)</translation>
     </message>
 </context>
 <context>
@@ -2763,32 +2804,32 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="224"/>
+        <location filename="../cli/CliContext.cpp" line="231"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="229"/>
+        <location filename="../cli/CliContext.cpp" line="236"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="287"/>
+        <location filename="../cli/CliContext.cpp" line="294"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="291"/>
+        <location filename="../cli/CliContext.cpp" line="298"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="309"/>
+        <location filename="../cli/CliContext.cpp" line="316"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="319"/>
+        <location filename="../cli/CliContext.cpp" line="326"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -2824,6 +2865,19 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../model/profile/CodeTable.cpp" line="29"/>
         <source>What to do: %1</source>
         <translation>조치: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CommLossArm</name>
+    <message>
+        <location filename="../model/eol/CommLossArm.cpp" line="29"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CommLossArm.cpp" line="40"/>
+        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
+        <translation>통신 두절 정지를 설정할 수 없습니다(%1 = %2 s): %3. 이 기능 없이 모터를 기동하지 않습니다</translation>
     </message>
 </context>
 <context>
@@ -4856,137 +4910,117 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="60"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="53"/>
         <source>identifying</source>
         <translation>식별 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
         <source>no drive answers at machine number %1</source>
         <translation>국번 %1에서 응답하는 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="77"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>국번 %1의 드라이버가 식별되지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="91"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="90"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 드라이버입니다. 레시피에는 %2 드라이버가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
-        <source>the drive does not report its variant and the recipe allows %1</source>
-        <translation>드라이버가 기종을 알려주지 않습니다. 레시피가 허용하는 기종: %1</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
-        <source>variant %1, the recipe allows %2</source>
-        <translation>기종 %1, 레시피가 허용하는 기종: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>펌웨어 %1, 레시피가 허용하는 펌웨어: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="95"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="116"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
         <source>no profile for the family %1</source>
         <translation>제품군 %1의 프로파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="162"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="183"/>
         <source>cannot read whether the motor runs or an alarm is active: %1</source>
         <translation>모터 운전 여부나 알람 발생 여부를 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="163"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="184"/>
         <source>no answer</source>
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="170"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="191"/>
         <source>its motor was running before the test</source>
         <translation>검사 전에 모터가 운전 중이었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="171"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="192"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>검사 전에 모터가 이미 운전 중입니다(중단된 검사가 남긴 상태?). 아무것도 쓰지 않았습니다: 먼저 정지하십시오(전체 정지 또는 드라이버에서)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="178"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="199"/>
         <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
         <translation>검사 전에 알람이 발생해 있습니다(이전 제품이 남긴 알람?). 아무것도 쓰지 않았습니다: 알람을 리셋하고 다시 검사하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="188"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>writing the settings</source>
         <translation>설정 쓰는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="230"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="251"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="237"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="258"/>
         <source>writing the settings: %1</source>
         <translation>설정 쓰는 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="245"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>reading every setting back</source>
         <translation>모든 설정을 다시 읽는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="260"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="281"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1을(를) 다시 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="287"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1이(가) 값을 유지하지 않습니다: %2(으)로 설정했지만 %3(으)로 읽힘</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="291"/>
         <source>verifying the settings: %1</source>
         <translation>설정 검증 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="284"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="305"/>
         <source>arming the communication-loss stop</source>
         <translation>통신 두절 정지를 설정하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="289"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="302"/>
-        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
-        <translation>통신 두절 정지를 설정할 수 없습니다(%1 = %2 s): %3. 이 기능 없이 모터를 기동하지 않습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="334"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="319"/>
         <source>testing</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="338"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="323"/>
         <source>step %1 of %2: %3</source>
         <translation>단계 %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="401"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="386"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
@@ -5064,143 +5098,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="31"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="35"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>기준 제품(골든 유닛)으로 레시피를 만듭니다: 백업 파일 또는 버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="37"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="41"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: 기준 제품의 백업 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: 버스에 있는 기준 제품의 드라이버, 예: 1,2 (연결 옵션과 함께).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 제품 이름.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: 레시피 개정.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 기존 레시피 파일을 교체합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="151"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="64"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
+        <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
+        <translation>오류: 국번 %1: %2. 기종을 알면 --variant %1=기종 으로 지정하십시오. 아무것도 쓰지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="102"/>
+        <source>machine number %1: %2, %3 (%4)</source>
+        <translation>국번 %1: %2, %3 (%4)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="79"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="122"/>
         <source>error: %1: cannot read %2</source>
         <translation>오류: %1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="82"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>오류: %1에 프로파일이 허용하지 않는 값이 있습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="128"/>
         <source>nothing written</source>
         <translation>아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>%1: %2 settings read</source>
         <translation>%1: 설정 %2개 읽음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="144"/>
         <source>error: %1; usage: eol %2</source>
         <translation>오류: %1; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="148"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>예상치 못한 인수 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="152"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE 또는 --drives LIST 중 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="113"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="156"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME으로 제품 이름을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV로 레시피 개정을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE로 저장할 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="121"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="164"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>오류: %1이(가) 이미 있습니다. 교체하려면 --force를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="168"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="142"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="197"/>
+        <source>Made from a golden unit; variants: %1.</source>
+        <translation>기준 제품으로 만듦. 기종: %1.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="224"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 저장함: %2 개정 %3, %4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="182"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>오류: 레시피가 &quot;eol recipe check&quot;를 통과하지 못합니다. 수정한 뒤 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
@@ -5421,298 +5470,309 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="73"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>결과 데이터베이스의 제품 목록, 직행률을 표시하거나 CSV로 내보냅니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>결과 데이터베이스: SQLite 파일, sqlite:PATH 또는 postgresql://user@host/db (기본값: OPENTOP_EOL_DB, 없으면 ~/.local/share/opentop/results.db).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results: 이 일련번호만. * 또는 ?가 있으면 대소문자를 구분하지 않는 패턴(&quot;SN-10*&quot;).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 또는 그 이후에 시작한 것 (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</translation>
     </message>
     <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <location filename="../cli/EolResultsCommand.cpp" line="90"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
         <source>results: started before T.</source>
         <translation>results: T 이전에 시작한 것.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: 이 레시피(제품 이름)만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>results: only this station.</source>
         <translation>results: 이 스테이션만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only the newest N units.</source>
         <translation>results: 최신 제품 N대만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="102"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV(RFC 4180)를 표준 출력 또는 -o FILE로.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="107"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: 근무조 시작 시각(현지 시간, 기본값 06:00,14:00,22:00).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="140"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot;은(는) 시각이 아닙니다. 2026-11-24, 2026-11-24T06:00 (현지 시간, 또는 Z나 +01:00 포함), 8h, 2d, today 또는 yesterday를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="150"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="171"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1이(가) --until %2보다 이전이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
         <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
         <translation>results: 이 버전의 레시피만(eol recipe check가 출력하는 체크섬으로 지정).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="95"/>
         <source>SUM</source>
         <translation>SUM</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="97"/>
         <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
         <translation>results: pass, fail, error(스테이션 오류), interrupted, aborted 또는 running.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="104"/>
         <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
         <translation>results: 레시피 버전별·근무조별 직행률, 2회 이내 합격률, 최종 합격률과 불합격 원인. 스테이션 오류와 중지는 수율에 넣지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="177"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass, fail, error, interrupted, aborted 또는 running을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="185"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 1 이상의 제품 수를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="222"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="195"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
         <source>no unit matches</source>
         <translation>일치하는 제품 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>time</source>
         <translation>시간</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>reason</source>
         <translation>원인</translation>
     </message>
     <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <source>drives</source>
+        <translation>드라이버</translation>
+    </message>
+    <message>
         <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="231"/>
         <source>shift</source>
         <translation>근무조</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>serials</source>
         <translation>시리얼 수</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>first pass</source>
         <translation>1회 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>second pass</source>
         <translation>2회 이내 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>last pass</source>
         <translation>최종 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>failed</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>station errors</source>
         <translation>스테이션 오류</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="250"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="253"/>
         <source>Yield per recipe version (station errors and aborts are not counted)</source>
         <translation>레시피 버전별 수율 (스테이션 오류와 중지는 집계하지 않음)</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="258"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="261"/>
         <source>%1: checksum %2</source>
         <translation>%1: 체크섬 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>not finished</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="259"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="262"/>
         <source>Per shift</source>
         <translation>근무조별</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
         <source>Failure reasons</source>
         <translation>불합격 원인</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="274"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="277"/>
         <source>Station errors (not counted in yield)</source>
         <translation>스테이션 오류 (수율에 집계하지 않음)</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="294"/>
         <source>wrote %1</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="303"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>오류: 예상치 못한 인수 &quot;%1&quot;; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="306"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="309"/>
         <source>error: give --csv or --json, not both</source>
         <translation>오류: --csv와 --json 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="310"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="313"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>오류: -o는 CSV 파일을 지정합니다: --csv도 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="318"/>
         <source>error: --shifts is for --yield</source>
         <translation>오류: --shifts는 --yield와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="325"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="328"/>
         <source>error: --shifts %1: %2</source>
         <translation>오류: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="343"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="369"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="345"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="372"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="380"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
@@ -5730,48 +5790,48 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>결과 데이터베이스에 제품을 기록할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="94"/>
+        <location filename="../model/eol/EolRun.cpp" line="96"/>
         <source>the recipe has no drives</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="109"/>
         <source>the recipe is not valid: %1</source>
         <translation>레시피가 올바르지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="112"/>
+        <location filename="../model/eol/EolRun.cpp" line="114"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: 이 제품의 %2 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="130"/>
+        <location filename="../model/eol/EolRun.cpp" line="132"/>
         <source>cancelled by the operator</source>
         <translation>작업자가 취소함</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="141"/>
+        <location filename="../model/eol/EolRun.cpp" line="143"/>
         <source>the connection was lost: %1</source>
         <translation>연결이 끊겼습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="149"/>
-        <location filename="../model/eol/EolRun.cpp" line="157"/>
+        <location filename="../model/eol/EolRun.cpp" line="151"/>
+        <location filename="../model/eol/EolRun.cpp" line="159"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="154"/>
+        <location filename="../model/eol/EolRun.cpp" line="156"/>
         <source>%1 failed</source>
         <translation>%1 실패</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="194"/>
+        <location filename="../model/eol/EolRun.cpp" line="196"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="203"/>
+        <location filename="../model/eol/EolRun.cpp" line="205"/>
         <source>recording the result</source>
         <translation>결과를 기록하는 중</translation>
     </message>
@@ -5779,179 +5839,194 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="88"/>
+        <location filename="../cli/EolRunCommand.cpp" line="90"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>Who tests it (default: the login name).</source>
         <translation>검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="101"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>레시피 규칙으로 막힌 재검사(이미 합격한 시리얼, 또는 검사 횟수를 다 쓴 시리얼)를 기술자가 허가합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="141"/>
+        <location filename="../cli/EolRunCommand.cpp" line="143"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="154"/>
+        <location filename="../cli/EolRunCommand.cpp" line="166"/>
+        <source>--variant %1: %2 allows %3; nothing was sent</source>
+        <translation>--variant %1: %2은(는) %3을(를) 허용합니다. 아무것도 보내지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="168"/>
+        <source>any %1 variant</source>
+        <translation>모든 %1 기종</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="177"/>
+        <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
+        <translation>--variant %1: 레시피에 국번 %2의 위치가 없습니다. 아무것도 보내지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="191"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="169"/>
+        <location filename="../cli/EolRunCommand.cpp" line="206"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="195"/>
+        <location filename="../cli/EolRunCommand.cpp" line="237"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="199"/>
+        <location filename="../cli/EolRunCommand.cpp" line="241"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="204"/>
+        <location filename="../cli/EolRunCommand.cpp" line="246"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="223"/>
+        <location filename="../cli/EolRunCommand.cpp" line="265"/>
         <source>error: %1; nothing was sent</source>
         <translation>오류: %1. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <location filename="../cli/EolRunCommand.cpp" line="267"/>
         <source>a technician allows it with --retest</source>
         <translation>기술자가 --retest로 허가할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="271"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>참고: %1. --retest의 허가로 다시 검사합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="231"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="250"/>
+        <location filename="../cli/EolRunCommand.cpp" line="292"/>
         <source>station: %1</source>
         <translation>스테이션: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="254"/>
+        <location filename="../cli/EolRunCommand.cpp" line="296"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="291"/>
-        <location filename="../cli/EolRunCommand.cpp" line="312"/>
+        <location filename="../cli/EolRunCommand.cpp" line="334"/>
+        <location filename="../cli/EolRunCommand.cpp" line="355"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="360"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="360"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="335"/>
+        <location filename="../cli/EolRunCommand.cpp" line="378"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="366"/>
+        <location filename="../cli/EolRunCommand.cpp" line="409"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="368"/>
+        <location filename="../cli/EolRunCommand.cpp" line="411"/>
         <source>attempt %1</source>
         <translation>%1회차 검사</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="418"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="377"/>
+        <location filename="../cli/EolRunCommand.cpp" line="420"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="382"/>
+        <location filename="../cli/EolRunCommand.cpp" line="425"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -5983,83 +6058,83 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="168"/>
+        <location filename="../model/eol/EolStation.cpp" line="170"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="165"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="169"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="176"/>
+        <location filename="../model/eol/EolStation.cpp" line="178"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="180"/>
+        <location filename="../model/eol/EolStation.cpp" line="182"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="185"/>
+        <location filename="../model/eol/EolStation.cpp" line="187"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="192"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="198"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="202"/>
-        <location filename="../model/eol/EolStation.cpp" line="246"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="206"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="210"/>
+        <location filename="../model/eol/EolStation.cpp" line="212"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="228"/>
+        <location filename="../model/eol/EolStation.cpp" line="230"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="250"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="311"/>
+        <location filename="../model/eol/EolStation.cpp" line="313"/>
         <source>no unit was started yet</source>
         <translation>아직 검사를 시작한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="323"/>
+        <location filename="../model/eol/EolStation.cpp" line="325"/>
         <source>cancelled before it started</source>
         <translation>시작 전에 취소됨</translation>
     </message>
@@ -9680,162 +9755,162 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="300"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
         <source>another</source>
         <translation>다른 유닛</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="334"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="485"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="490"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
     </message>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="177"/>
         <location filename="../ui/eol/ProductionView.cpp" line="184"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="356"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="353"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
         <source>Unit %1 — attempt %2</source>
         <translation>제품 %1 — %2회차</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="382"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1, 기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="397"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
         <source>%1 (kept on this station)</source>
         <translation>%1 (이 스테이션에 보관)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="414"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="419"/>
         <source>NOT RECORDED</source>
         <translation>기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="436"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="457"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
         <source>STATION ERROR</source>
         <translation>스테이션 오류</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="464"/>
         <source>%1
 Not a verdict on the unit: fix the cause and test it again.</source>
         <translation>%1
 제품 판정이 아닙니다: 원인을 해결한 뒤 다시 검사하십시오.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="477"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="476"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
         <source>it does not answer</source>
         <translation>데이터베이스가 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="479"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="484"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
     </message>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="192"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="437"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="385"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="455"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="415"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="454"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="453"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="467"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="388"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="394"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -9847,37 +9922,37 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="427"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="431"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="442"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot;가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="453"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>must be an object</source>
         <translation>객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
         <source>name repeated</source>
         <translation>이름이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="464"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="468"/>
         <source>texts: {setting:…} names no parameter (%1)</source>
         <translation>texts: {setting:…}이(가) 가리키는 파라미터가 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="477"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 열 수 없습니다: %2</translation>
     </message>
@@ -10218,110 +10293,120 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>%1: 기종 &quot;%2&quot;이(가) 두 번 지정되었습니다</translation>
     </message>
     <message>
+        <location filename="../model/eol/RecipeChecker.cpp" line="157"/>
+        <source>%1: variantProof &quot;%2&quot; is not known; use &quot;required&quot; or &quot;operator&quot; (or leave it out)</source>
+        <translation>%1: variantProof &quot;%2&quot;은(는) 알 수 없습니다. &quot;required&quot; 또는 &quot;operator&quot;를 쓰십시오 (또는 생략)</translation>
+    </message>
+    <message>
         <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
+        <source>%1: variantProof &quot;operator&quot; needs exactly one allowed variant for the operator to confirm</source>
+        <translation>%1: variantProof &quot;operator&quot;에는 작업자가 확인할 허용 기종이 정확히 하나 있어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeChecker.cpp" line="174"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1: 펌웨어 버전 &quot;%2&quot;이(가) 드라이버가 알려주는 버전 형식이 아닙니다(major.minor, 예: &quot;1.5&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="175"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="187"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1에 설정 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="177"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="189"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1은(는) 레시피로 쓸 수 있는 설정이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="179"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="191"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1은(는) 드라이버의 통신 방식을 정합니다. 레시피로 바꿀 수 없습니다. 바꾸면 검사 도중 스테이션이 드라이버와 통신할 수 없게 됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="199"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="211"/>
         <source>%1: setting %2</source>
         <translation>%1: 설정 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="204"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="269"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="216"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="210"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="222"/>
         <source>%1 is given twice</source>
         <translation>%1이(가) 두 번 지정되었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="230"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1: 허용 범위가 %2에 따라 달라지는데 레시피가 이를 설정하지 않습니다. 설정에 %2을(를) 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="227"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="239"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1은(는) %2의 허용 범위를 정합니다. 레시피에서 %2도 설정하십시오. 그렇지 않으면 드라이버에 더 이상 유효하지 않은 값이 남을 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="243"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="311"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="255"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="323"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1: 단위가 &quot;%2&quot;이지만 드라이버 값의 단위는 &quot;%3&quot;입니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="366"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="276"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 제품별 값 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="275"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="287"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1이(가) 두 번 지정되었습니다(설정 또는 제품별 값으로)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="293"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1: 범위의 최솟값 %2이(가) 최댓값 %3보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="302"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1: 허용 범위가 레시피에서 설정하지 않는 %2에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="309"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1은(는) 숫자가 아닙니다. 제품별 값에는 숫자 설정이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="315"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="327"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 범위 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1이(가) 드라이버 허용 범위를 벗어납니다: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="345"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1에 드라이버가 허용하지 않는 값이 포함되어 있습니다. 허용: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="359"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 제품별 값 %2: %3%4이(가) 레시피 범위 %5–%6%4을(를) 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="370"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="382"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: 레시피에 제품별 값 %2이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="373"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>레시피에 국번 %1의 드라이버가 없습니다</translation>
     </message>
@@ -10548,12 +10633,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="263"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1이(가) 레시피 파일의 최대 크기 %2 MB보다 큽니다. 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="270"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="271"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -10665,112 +10750,112 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../model/eol/RecipeParser.cpp" line="134"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="211"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="178"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="179"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot;는 숫자 또는 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="194"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="195"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot;는 &quot;%3&quot;이(가) 아니라 &quot;csv&quot; 또는 &quot;operator&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="207"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 단계 유형 &quot;%2&quot;; 알려진 유형: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="221"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="222"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot;는 2와 같은 운전 데이터 번호여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="234"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="235"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot;은 &quot;cw&quot; 또는 &quot;ccw&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="278"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="279"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1: &quot;equals&quot;와 한계값 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="284"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="285"/>
         <source>%1: unknown step</source>
         <translation>%1: 알 수 없는 단계</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="300"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1: &quot;unit&quot;은 텍스트여야 합니다(단위가 없는 값은 &quot;&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="303"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="304"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1: 한계값에는 &quot;lower&quot;, &quot;upper&quot; 또는 둘 다 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="312"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="313"/>
         <source>&quot;retest&quot; must be an object</source>
         <translation>&quot;retest&quot;는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="321"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="322"/>
         <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
         <translation>retest: &quot;maxAttempts&quot;는 0(제한 없음)부터 100까지의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="331"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="332"/>
         <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
         <translation>retest: &quot;passedSerial&quot;은 &quot;%1&quot;이(가) 아니라 technician, refuse 또는 allow여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="343"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 알 수 없는 키 &quot;%2&quot;; 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="357"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot;은(는) 비어 있지 않은 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="359"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot;은(는) 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot;은(는) 텍스트 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="373"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="374"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot;은(는) 비어 있지 않은 텍스트의 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot;은(는) 숫자여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="409"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="410"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot;은(는) 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="412"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="413"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot;에 항목이 %3개 있습니다. 최대 %4개까지 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="418"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="419"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: 모든 항목은 객체여야 합니다</translation>
     </message>
@@ -12155,7 +12240,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="152"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="202"/>
         <source>no unit record %1</source>
         <translation>제품 기록 %1 없음</translation>
     </message>
@@ -12163,12 +12248,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="200"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="206"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>결과 데이터베이스의 스키마 버전 %1이(가) 이 프로그램이 아는 버전(%2)보다 새롭습니다: 이 스테이션의 OpenTOP을 업데이트하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="235"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="241"/>
         <source>the migration left a record pointing at no unit (table %1)</source>
         <translation>마이그레이션 후 어떤 제품도 가리키지 않는 기록이 남았습니다(테이블 %1)</translation>
     </message>
@@ -12218,22 +12303,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>제품에는 시리얼 번호가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="178"/>
+        <location filename="../model/eol/ResultStore.cpp" line="190"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>제품은 %1이(가) 아니라 pass, fail, error 또는 aborted로 끝나야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="208"/>
+        <location filename="../model/eol/ResultStore.cpp" line="220"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 시작된 적이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="210"/>
+        <location filename="../model/eol/ResultStore.cpp" line="222"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>제품 %1(시리얼 %2)은(는) 이미 %3(으)로 기록되어 있습니다. 기존 기록을 유지합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="233"/>
+        <location filename="../model/eol/ResultStore.cpp" line="244"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 진행 중이 아닙니다: 시작된 적이 없거나, 이미 끝났거나, 중단됨으로 표시되었습니다</translation>
     </message>
@@ -12441,7 +12526,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="345"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="344"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
@@ -12464,7 +12549,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="372"/>
         <source>no unit is selected</source>
         <translation>선택한 제품이 없습니다</translation>
     </message>
@@ -12474,49 +12559,49 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>제품 %1을(를) 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="374"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>제품 기록을 아직 읽는 중입니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="382"/>
         <source>Open results database</source>
         <translation>결과 데이터베이스 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="384"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 데이터베이스 (*.db *.sqlite);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
         <source>Export units as CSV</source>
         <translation>제품을 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="399"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>제품 %n대를 %1에 저장했습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="409"/>
         <source>Save certificate</source>
         <translation>성적서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="411"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 파일 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
         <source>Certificate written to %1</source>
         <translation>성적서를 %1에 저장했습니다</translation>
     </message>
@@ -14461,12 +14546,12 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationAlarmReset</name>
     <message>
-        <location filename="../model/eol/StationAlarmReset.cpp" line="55"/>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
         <source>machine number %1: not connected to a bus</source>
         <translation>국번 %1: 버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="57"/>
         <source>machine number %1 is not a position of the recipe</source>
         <translation>국번 %1은(는) 레시피에 있는 위치가 아닙니다</translation>
     </message>
@@ -17051,27 +17136,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="106"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="113"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>제품 기록이 아닙니다(format이 &quot;%1&quot;이(가) 아님)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="109"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>제품 기록 버전 %1은(는) 이 프로그램이 알지 못합니다(%2까지 읽음)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="123"/>
         <source>the unit record has no serial number</source>
         <translation>제품 기록에 시리얼 번호가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="128"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="135"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>알 수 없는 제품 상태 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="173"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="149"/>
+        <source>unknown variant source &quot;%1&quot;</source>
+        <translation>알 수 없는 기종 출처 &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="188"/>
         <source>not JSON: %1</source>
         <translation>JSON이 아닙니다: %1</translation>
     </message>
@@ -17308,6 +17398,77 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::VariantCheck</name>
+    <message>
+        <location filename="../model/eol/VariantCheck.cpp" line="23"/>
+        <source>proving the variant (%1)</source>
+        <translation>기종 확인 중 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantDecision</name>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="39"/>
+        <source>the variant probe left the drive changed: %1</source>
+        <translation>기종 확인 후 드라이버가 바뀐 채로 남았습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="44"/>
+        <source>reported by the drive</source>
+        <translation>드라이버가 알려 줌</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="53"/>
+        <source>%1; named by %2</source>
+        <translation>%1; %2이(가) 지정</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="57"/>
+        <source>given for the unit by %1 (eol run --variant)</source>
+        <translation>%1이(가) 이 제품에 지정 (eol run --variant)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="62"/>
+        <source>confirmed by the operator %1 (the recipe asks the operator)</source>
+        <translation>작업자 %1이(가) 확인 (레시피가 작업자 확인을 요구)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="67"/>
+        <source>the recipe&apos;s only variant, not proven on the bus</source>
+        <translation>레시피의 유일한 기종, 버스에서 확인되지 않음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="74"/>
+        <source>the family has no variant probe</source>
+        <translation>이 제품군에는 기종 확인 방법이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="76"/>
+        <source>the probe leaves %1 (%2)</source>
+        <translation>확인 결과가 %1 중 하나입니다 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="81"/>
+        <source>the drive does not report its variant and it was not proven (%1)</source>
+        <translation>드라이버가 기종을 알려 주지 않으며 확인되지도 않았습니다 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="82"/>
+        <source>the drive does not report its variant and it was not proven (%1); the recipe allows %2 and needs proof</source>
+        <translation>드라이버가 기종을 알려 주지 않으며 확인되지도 않았습니다 (%1); 레시피는 %2을(를) 허용하며 확인이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="90"/>
+        <source>the drive is a %1 (%2), but %3 was given for it</source>
+        <translation>드라이버는 %1입니다 (%2). 그러나 %3(으)로 지정되었습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="93"/>
+        <source>a %1 (%2), the recipe allows %3</source>
+        <translation>%1입니다 (%2). 레시피는 %3을(를) 허용합니다</translation>
+    </message>
+</context>
+<context>
     <name>opentop::VariantNeed</name>
     <message>
         <location filename="../model/bus/VariantNeed.cpp" line="19"/>
@@ -17358,6 +17519,72 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/bus/VariantNeed.cpp" line="112"/>
         <source>Last time on this bus it was set as %1.</source>
         <translation>지난번 이 버스에서는 %1(으)로 설정했습니다.</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantProbe</name>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="51"/>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>알 수 없는 키 &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="58"/>
+        <source>needs &quot;parameter&quot;, a number &quot;value&quot; and &quot;refusedCode&quot;</source>
+        <translation>&quot;parameter&quot;, 숫자 &quot;value&quot;, &quot;refusedCode&quot;가 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="63"/>
+        <source>no parameter &quot;%1&quot;</source>
+        <translation>파라미터 &quot;%1&quot;이(가) 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="67"/>
+        <source>%1 must be a readable, writable setting that no role names (never a command or a motion register)</source>
+        <translation>%1은(는) 읽고 쓸 수 있고 어떤 역할에도 쓰이지 않는 설정이어야 합니다 (명령이나 운전 레지스터는 안 됩니다)</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="77"/>
+        <source>%1 = %2 must be allowed on some variants and refused on others</source>
+        <translation>%1 = %2은(는) 일부 기종에서는 허용되고 다른 기종에서는 거부되어야 합니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantProber</name>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="30"/>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1을(를) 읽을 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="59"/>
+        <source>the probe %1 was not answered as the manual says: %2</source>
+        <translation>기종 확인 %1에 대한 응답이 매뉴얼과 다릅니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="83"/>
+        <source>%1 could not be set back to %2 after the variant probe (%3): set it to %2 before this drive is used</source>
+        <translation>기종 확인 후 %1을(를) %2(으)로 되돌리지 못했습니다 (%3): 이 드라이버를 사용하기 전에 %2(으)로 설정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="88"/>
+        <source>%1 accepted, %2 written back</source>
+        <translation>%1 수락됨, %2(으)로 되돌려 씀</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="96"/>
+        <source>%1 refused (%2)</source>
+        <translation>%1 거부됨 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="106"/>
+        <source>%1 does not read back as %2 after the variant probe (%3): set it to %2 before this drive is used</source>
+        <translation>기종 확인 후 %1의 읽은 값이 %2이(가) 아닙니다 (%3): 이 드라이버를 사용하기 전에 %2(으)로 설정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="113"/>
+        <source>the probe did not decide</source>
+        <translation>확인으로 판정하지 못했습니다</translation>
     </message>
 </context>
 <context>

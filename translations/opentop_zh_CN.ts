@@ -260,187 +260,187 @@
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="51"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>top level</source>
         <translation>顶层</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="54"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="55"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必须为 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="66"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必须是小写 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="72"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必须为 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="78"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必须为 1200–115200，stopBits 必须为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="88"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats：“%1”不是 8N1 或 8E1 这样的格式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="92"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats 必须包含默认格式 %1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="96"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="98"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs 必须为 0–60000</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="109"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 1–125，maxWriteRegisters 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="113"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必须在 1–247 范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="126"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="139"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="141"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="150"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="152"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能码 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="194"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
         <source>%1 has no name</source>
         <translation>%1 没有名称</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="198"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必须是 %2 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="199"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代码 %2 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="217"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
         <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
         <translation>%1：storeWith &quot;%2&quot; 不是命令参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="220"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
         <source>%1: the default is not among its allowed values</source>
         <translation>%1：默认值不在允许值范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="224"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
         <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
         <translation>%1：位域 &quot;%2&quot;：功能 &quot;%3&quot; 不是可读参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
         <source>%1: condition on unknown parameter &quot;%2&quot;</source>
         <translation>%1：条件引用了未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
         <source>%1: the default is not allowed when %2</source>
         <translation>%1：当 %2 时不允许使用默认值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="243"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
         <source>%1 runs past address 0xFFFF</source>
         <translation>%1 超出地址 0xFFFF</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
         <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
         <translation>%1 与 &quot;%2&quot; 在 0x%3 处重叠（%4 个寄存器）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="270"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
         <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
         <translation>identify：&quot;%1&quot; 必须是 identify 读取范围内的参数</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="273"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
         <source>identify.nameMatch is not a valid regular expression</source>
         <translation>identify.nameMatch 不是有效的正则表达式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="285"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="313"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必须是参数名、参数名列表或对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="322"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 没有位域 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="328"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是可用于写入 &quot;%3&quot; 的值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="346"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="362"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 需要 &quot;selected&quot; 和 &quot;maxSeconds&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="365"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重复出现</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="370"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1：&quot;maxSeconds&quot; 必须大于 0 且不超过 600</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="402"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1：&quot;light&quot; 必须是 %2 之一，且每个只能出现一次</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="405"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1：&quot;colour&quot; 必须为 #rrggbb</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1：&quot;label&quot; 和 &quot;meaning&quot; 不能为空</translation>
     </message>
@@ -2391,7 +2391,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
@@ -2432,7 +2432,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
@@ -2458,12 +2458,12 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Attempt</source>
         <translation>测试次数</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>第 %1 次（该序列号在此配方下的测试）</translation>
     </message>
@@ -2474,7 +2474,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
@@ -2506,137 +2506,178 @@ Drives: %5</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Variant</source>
         <translation>机型</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <source>How known</source>
+        <translation>如何得知</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Settings</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>Written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="122"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>Read back</source>
         <translation>回读</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
         <source>Verified</source>
         <translation>已校验</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>already set</source>
         <translation>已是该值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Measurements</source>
         <translation>测量值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Quantity</source>
         <translation>测量项</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>Earlier tests of this serial</source>
         <translation>该序列号此前的测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="139"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="154"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前后的总线报文</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="169"/>
+        <source>read from the drive</source>
+        <translation>从驱动器读取</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="171"/>
+        <source>proven by the variant probe</source>
+        <translation>由机型探测证实</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="173"/>
+        <source>confirmed by a person</source>
+        <translation>由人员确认</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="175"/>
+        <source>ASSUMED, not proven</source>
+        <translation>推定，未证实</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="179"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="185"/>
+        <source>not known</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="187"/>
+        <source>%1 (assumed)</source>
+        <translation>%1（推定）</translation>
     </message>
 </context>
 <context>
@@ -2763,32 +2804,32 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="224"/>
+        <location filename="../cli/CliContext.cpp" line="231"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="229"/>
+        <location filename="../cli/CliContext.cpp" line="236"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="287"/>
+        <location filename="../cli/CliContext.cpp" line="294"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="291"/>
+        <location filename="../cli/CliContext.cpp" line="298"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="309"/>
+        <location filename="../cli/CliContext.cpp" line="316"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="319"/>
+        <location filename="../cli/CliContext.cpp" line="326"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -2824,6 +2865,19 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../model/profile/CodeTable.cpp" line="29"/>
         <source>What to do: %1</source>
         <translation>处理方法：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CommLossArm</name>
+    <message>
+        <location filename="../model/eol/CommLossArm.cpp" line="29"/>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CommLossArm.cpp" line="40"/>
+        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
+        <translation>无法启用通信中断停止（%1 = %2 s）：%3；没有它不会启动电机</translation>
     </message>
 </context>
 <context>
@@ -4856,137 +4910,117 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="60"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="53"/>
         <source>identifying</source>
         <translation>正在识别</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
         <source>no drive answers at machine number %1</source>
         <translation>站号 %1 上没有驱动器应答</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="77"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>站号 %1 上的驱动器未识别：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="91"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="90"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>是 %1 驱动器，配方需要 %2 驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
-        <source>the drive does not report its variant and the recipe allows %1</source>
-        <translation>驱动器未报告其机型，而配方允许 %1</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
-        <source>variant %1, the recipe allows %2</source>
-        <translation>机型 %1，配方允许 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="109"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>固件 %1，配方允许 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="95"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="116"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
         <source>no profile for the family %1</source>
         <translation>没有系列 %1 的设备描述</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="162"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="183"/>
         <source>cannot read whether the motor runs or an alarm is active: %1</source>
         <translation>无法读取电机是否在运行或是否有报警：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="163"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="184"/>
         <source>no answer</source>
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="170"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="191"/>
         <source>its motor was running before the test</source>
         <translation>测试前其电机已在运行</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="171"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="192"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>测试前电机已在运行（上次运行中断遗留？）；未写入任何内容：请先停止（全部停止，或在驱动器上停止）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="178"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="199"/>
         <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
         <translation>测试前已有报警（上一台产品遗留？）；未写入任何内容：请复位报警后重新测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="188"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>writing the settings</source>
         <translation>正在写入设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="230"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="251"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="237"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="258"/>
         <source>writing the settings: %1</source>
         <translation>正在写入设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="245"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>reading every setting back</source>
         <translation>正在回读全部设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="260"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="281"/>
         <source>%1 cannot be read back: %2</source>
         <translation>%1 无法回读：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="287"/>
         <source>%1 does not keep its value: set to %2, reads %3</source>
         <translation>%1 未保持其值：设定为 %2，读取为 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="291"/>
         <source>verifying the settings: %1</source>
         <translation>正在校验设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="284"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="305"/>
         <source>arming the communication-loss stop</source>
         <translation>启用通信中断停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="289"/>
-        <source>cannot read %1: %2</source>
-        <translation>无法读取 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="302"/>
-        <source>the communication-loss stop cannot be armed (%1 = %2 s): %3; the motor is not started without it</source>
-        <translation>无法启用通信中断停止（%1 = %2 s）：%3；没有它不会启动电机</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="334"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="319"/>
         <source>testing</source>
         <translation>正在测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="338"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="323"/>
         <source>step %1 of %2: %3</source>
         <translation>步骤 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="401"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="386"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -5064,143 +5098,158 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="31"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="35"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>从标准样机生成配方：备份文件或总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="37"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="41"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：标准样机的备份文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：标准样机在总线上的驱动器，例如 1,2（配合连接选项）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：产品名称。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="43"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版本。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：替换已有的配方文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="151"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="64"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
+        <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
+        <translation>错误：站号 %1：%2；若知道机型，请用 --variant %1=机型 指定；未写入任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="102"/>
+        <source>machine number %1: %2, %3 (%4)</source>
+        <translation>站号 %1：%2，%3（%4）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>读取站号 %1 时中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="79"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="122"/>
         <source>error: %1: cannot read %2</source>
         <translation>错误：%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="82"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>错误：%1 含有其设备描述不允许的值：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="85"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="128"/>
         <source>nothing written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已读取 %2 项设定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="101"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="144"/>
         <source>error: %1; usage: eol %2</source>
         <translation>错误：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="148"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>意外的参数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="152"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>请指定 --from-backup FILE 或 --drives LIST 之一</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="113"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="156"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>请用 --product NAME 指定产品名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>请用 --revision REV 指定配方版本</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>请用 -o RECIPE 指定要写入的配方文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="121"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="164"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>错误：%1 已存在；使用 --force 进行替换</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="168"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="142"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="197"/>
+        <source>Made from a golden unit; variants: %1.</source>
+        <translation>由标准样机制作；机型：%1。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="224"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已写入 %1：%2 版本 %3，%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="182"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>错误：配方未通过 &quot;eol recipe check&quot;：请修正，然后用 &quot;opentop-cli eol recipe sign %1&quot; 签名</translation>
     </message>
@@ -5421,298 +5470,309 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="73"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>列出结果数据库中的产品及其直通率，或导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>结果数据库：SQLite 文件、sqlite:PATH 或 postgresql://user@host/db（默认：OPENTOP_EOL_DB，否则为 ~/.local/share/opentop/results.db）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results：只列出此序列号；含 * 或 ? 时为不区分大小写的模式（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results：开始时间不早于 T（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <location filename="../cli/EolResultsCommand.cpp" line="90"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
         <source>results: started before T.</source>
         <translation>results：开始时间早于 T。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: only this recipe (product name).</source>
         <translation>results：仅该配方（产品名称）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>results: only this station.</source>
         <translation>results：仅该工位。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only the newest N units.</source>
         <translation>results：仅最新的 N 台产品。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="102"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results：输出 CSV（RFC 4180）到标准输出或 -o FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="107"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield：各班次的开始时间（本地时间，默认 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="140"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; 不是时间；请使用 2026-11-24、2026-11-24T06:00（本地时间，或带 Z 或 +01:00）、8h、2d、today 或 yesterday</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="288"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="150"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
         <source>--%1: %2</source>
         <translation>--%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="171"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 不早于 --until %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
         <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
         <translation>results：仅该版本的配方（以校验和指定，即 eol recipe check 输出的值）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="95"/>
         <source>SUM</source>
         <translation>SUM</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="97"/>
         <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
         <translation>results：pass、fail、error（工位错误）、interrupted、aborted 或 running。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="104"/>
         <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
         <translation>results：按配方版本和班次列出直通率、二次合格率、最终合格率及不合格原因；工位错误和中止不计入合格率。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="177"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;：请指定 pass、fail、error、interrupted、aborted 或 running</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="185"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;：请给出从 1 起的产品台数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="222"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="195"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
         <source>no unit matches</source>
         <translation>没有匹配的产品</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
         <source>recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>reason</source>
         <translation>原因</translation>
     </message>
     <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <source>drives</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
         <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="228"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="231"/>
         <source>shift</source>
         <translation>班次</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>serials</source>
         <translation>序列号数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>first pass</source>
         <translation>一次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>second pass</source>
         <translation>二次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>last pass</source>
         <translation>最终合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>failed</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>station errors</source>
         <translation>工位错误</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="250"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="253"/>
         <source>Yield per recipe version (station errors and aborts are not counted)</source>
         <translation>各配方版本的合格率（不计入工位错误和中止）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="258"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="261"/>
         <source>%1: checksum %2</source>
         <translation>%1：校验和 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>not finished</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="259"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="262"/>
         <source>Per shift</source>
         <translation>各班次</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="273"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
         <source>Failure reasons</source>
         <translation>不合格原因</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="274"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="277"/>
         <source>Station errors (not counted in yield)</source>
         <translation>工位错误（不计入合格率）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="294"/>
         <source>wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="303"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>错误：意外的参数 &quot;%1&quot;；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="306"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="309"/>
         <source>error: give --csv or --json, not both</source>
         <translation>错误：--csv 和 --json 只能指定其一</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="310"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="313"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>错误：-o 指定的是 CSV 文件：请同时指定 --csv</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="318"/>
         <source>error: --shifts is for --yield</source>
         <translation>错误：--shifts 仅用于 --yield</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="325"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="328"/>
         <source>error: --shifts %1: %2</source>
         <translation>错误：--shifts %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="343"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="369"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="345"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="372"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="380"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
@@ -5730,48 +5790,48 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>结果数据库无法记录该产品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="94"/>
+        <location filename="../model/eol/EolRun.cpp" line="96"/>
         <source>the recipe has no drives</source>
         <translation>配方中没有驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="107"/>
+        <location filename="../model/eol/EolRun.cpp" line="109"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方无效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="112"/>
+        <location filename="../model/eol/EolRun.cpp" line="114"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：该产品没有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="130"/>
+        <location filename="../model/eol/EolRun.cpp" line="132"/>
         <source>cancelled by the operator</source>
         <translation>已被操作员取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="141"/>
+        <location filename="../model/eol/EolRun.cpp" line="143"/>
         <source>the connection was lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="149"/>
-        <location filename="../model/eol/EolRun.cpp" line="157"/>
+        <location filename="../model/eol/EolRun.cpp" line="151"/>
+        <location filename="../model/eol/EolRun.cpp" line="159"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="154"/>
+        <location filename="../model/eol/EolRun.cpp" line="156"/>
         <source>%1 failed</source>
         <translation>%1 失败</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="194"/>
+        <location filename="../model/eol/EolRun.cpp" line="196"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="203"/>
+        <location filename="../model/eol/EolRun.cpp" line="205"/>
         <source>recording the result</source>
         <translation>正在记录结果</translation>
     </message>
@@ -5779,179 +5839,194 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="88"/>
+        <location filename="../cli/EolRunCommand.cpp" line="90"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>在下线工位设定并测试一台产品；记录结果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>产品序列号（按条码读取）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="96"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
         <source>Who tests it (default: the login name).</source>
         <translation>测试人员（默认：登录名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="95"/>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="98"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>本工位名称（默认：主机名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
+        <location filename="../cli/EolRunCommand.cpp" line="99"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含单台数值的 CSV 文件，按序列号对应。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="101"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由操作员输入的单台数值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技术员许可配方规则不允许的重新测试（已合格的序列号，或测试次数已用完）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：请写成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="141"/>
+        <location filename="../cli/EolRunCommand.cpp" line="143"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="154"/>
+        <location filename="../cli/EolRunCommand.cpp" line="166"/>
+        <source>--variant %1: %2 allows %3; nothing was sent</source>
+        <translation>--variant %1：%2 允许 %3；未发送任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="168"/>
+        <source>any %1 variant</source>
+        <translation>任何 %1 机型</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="177"/>
+        <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
+        <translation>--variant %1：配方在站号 %2 没有位置；未发送任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="191"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="169"/>
+        <location filename="../cli/EolRunCommand.cpp" line="206"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方无效；未发送任何内容：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="195"/>
+        <location filename="../cli/EolRunCommand.cpp" line="237"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="199"/>
+        <location filename="../cli/EolRunCommand.cpp" line="241"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：单元 %1（开始于 %2）因工作站进程已结束而未完成，现已记录为“中断”。请确认其电机已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="204"/>
+        <location filename="../cli/EolRunCommand.cpp" line="246"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 条结果尚未能发送到结果数据库</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="223"/>
+        <location filename="../cli/EolRunCommand.cpp" line="265"/>
         <source>error: %1; nothing was sent</source>
         <translation>错误：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="225"/>
+        <location filename="../cli/EolRunCommand.cpp" line="267"/>
         <source>a technician allows it with --retest</source>
         <translation>技术员可用 --retest 许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="271"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；按 --retest 的许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="231"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="250"/>
+        <location filename="../cli/EolRunCommand.cpp" line="292"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="254"/>
+        <location filename="../cli/EolRunCommand.cpp" line="296"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驱动器未确认停止；未进行任何检测</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="291"/>
-        <location filename="../cli/EolRunCommand.cpp" line="312"/>
+        <location filename="../cli/EolRunCommand.cpp" line="334"/>
+        <location filename="../cli/EolRunCommand.cpp" line="355"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="360"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="317"/>
+        <location filename="../cli/EolRunCommand.cpp" line="360"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="335"/>
+        <location filename="../cli/EolRunCommand.cpp" line="378"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="366"/>
+        <location filename="../cli/EolRunCommand.cpp" line="409"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="368"/>
+        <location filename="../cli/EolRunCommand.cpp" line="411"/>
         <source>attempt %1</source>
         <translation>第 %1 次测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="418"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="377"/>
+        <location filename="../cli/EolRunCommand.cpp" line="420"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="382"/>
+        <location filename="../cli/EolRunCommand.cpp" line="425"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
     </message>
@@ -5983,83 +6058,83 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="168"/>
+        <location filename="../model/eol/EolStation.cpp" line="170"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="165"/>
+        <location filename="../model/eol/EolStation.cpp" line="167"/>
         <source>opening the results database</source>
         <translation>正在打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="169"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>无法连接（%1）；正在自动重试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="176"/>
+        <location filename="../model/eol/EolStation.cpp" line="178"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="180"/>
+        <location filename="../model/eol/EolStation.cpp" line="182"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="185"/>
+        <location filename="../model/eol/EolStation.cpp" line="187"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="192"/>
+        <location filename="../model/eol/EolStation.cpp" line="194"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在打开结果数据库；请稍后再试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="196"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="198"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="202"/>
-        <location filename="../model/eol/EolStation.cpp" line="246"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/eol/EolStation.cpp" line="248"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="206"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驱动器确认安全后，单元 %1 会立即开始</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="210"/>
+        <location filename="../model/eol/EolStation.cpp" line="212"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="228"/>
+        <location filename="../model/eol/EolStation.cpp" line="230"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="250"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>工作站有驱动器不安全：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="311"/>
+        <location filename="../model/eol/EolStation.cpp" line="313"/>
         <source>no unit was started yet</source>
         <translation>尚未开始任何产品的测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="323"/>
+        <location filename="../model/eol/EolStation.cpp" line="325"/>
         <source>cancelled before it started</source>
         <translation>开始前已取消</translation>
     </message>
@@ -9680,162 +9755,162 @@ No unit can be tested until results can be recorded. The station tries again by 
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="298"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序列号 %1 未被接受：单元 %2 正在检测中。请在其判定结果显示后再扫描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="300"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
         <source>another</source>
         <translation>另一个单元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
         <source>Per-unit value</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="315"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驱动器 %1：%2（%3–%4 %5）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="334"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>单元 %1：先使工作站的驱动器进入安全状态…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="485"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="490"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驱动器进入安全状态：逐一读取、停止仍在运转者、将控制权交还其输入端子…</translation>
     </message>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="177"/>
         <location filename="../ui/eol/ProductionView.cpp" line="184"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
         <source>NOT STARTED</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="356"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="353"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>TESTING</source>
         <translation>测试中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
         <source>Unit %1 — attempt %2</source>
         <translation>产品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="382"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：结果服务器没有响应。服务器响应后会自动发送。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="397"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="414"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="419"/>
         <source>NOT RECORDED</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="436"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 结果数据库恢复后，已于 %2 记录。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="457"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
         <source>STATION ERROR</source>
         <translation>工位错误</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="464"/>
         <source>%1
 Not a verdict on the unit: fix the cause and test it again.</source>
         <translation>%1
 这不是对产品的判定：请排除原因后重新测试。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="477"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 条结果，尚未存入结果数据库：%1。数据库响应后会按顺序自动发送。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="476"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
         <source>it does not answer</source>
         <translation>数据库没有响应</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="479"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="484"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>单元 %1（开始于 %2）未完成：工作站在检测中停止。已记录为“中断”，请重新检测。</translation>
     </message>
     <message>
         <location filename="../ui/eol/ProductionView.cpp" line="192"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="380"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="437"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="385"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="455"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="415"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
 记录完成前不进行任何测试。工作站会自动重试（下次 %4）；请将此产品放在一边。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="454"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="453"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="462"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="467"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="388"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="389"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="394"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -9847,37 +9922,37 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="427"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="431"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="442"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="453"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
         <source>must be an object</source>
         <translation>必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
         <source>name repeated</source>
         <translation>名称重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="464"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="468"/>
         <source>texts: {setting:…} names no parameter (%1)</source>
         <translation>texts：{setting:…} 指向的参数不存在（%1）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="473"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="477"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：无法打开：%2</translation>
     </message>
@@ -10218,110 +10293,120 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>%1：机型 &quot;%2&quot; 指定了两次</translation>
     </message>
     <message>
+        <location filename="../model/eol/RecipeChecker.cpp" line="157"/>
+        <source>%1: variantProof &quot;%2&quot; is not known; use &quot;required&quot; or &quot;operator&quot; (or leave it out)</source>
+        <translation>%1：variantProof“%2”无法识别；请用 &quot;required&quot; 或 &quot;operator&quot;（或省略）</translation>
+    </message>
+    <message>
         <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
+        <source>%1: variantProof &quot;operator&quot; needs exactly one allowed variant for the operator to confirm</source>
+        <translation>%1：variantProof &quot;operator&quot; 需要恰好一个允许的机型供操作员确认</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeChecker.cpp" line="174"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1：固件版本 &quot;%2&quot; 不是驱动器报告的版本格式（major.minor，例如 &quot;1.5&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="175"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="187"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 没有设定 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="177"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="189"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 不是配方可以写入的设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="179"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="191"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 决定驱动器的通信方式；配方不能修改它，否则工位会在运行中途失去与驱动器的连接</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="199"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="211"/>
         <source>%1: setting %2</source>
         <translation>%1：设定 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="204"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="269"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="216"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="210"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="222"/>
         <source>%1 is given twice</source>
         <translation>%1 指定了两次</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="230"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1：其允许值取决于 %2，但配方未设定该项；请将 %2 加入设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="227"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="239"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 决定 %2 的允许值；请在配方中同时设定 %2，否则驱动器可能残留一个不再有效的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="243"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="311"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="255"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="323"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1：单位为 &quot;%2&quot;，但驱动器的值以 &quot;%3&quot; 为单位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="264"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="366"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="276"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
         <source>%1: per-unit value %2</source>
         <translation>%1：单台数值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="275"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="287"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 指定了两次（作为设定或单台数值）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="293"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1：范围的最小值 %2 大于最大值 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="302"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1：其允许值取决于 %2，但配方未设定该项</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="309"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 不是数值；单台数值需要数值型设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="315"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="327"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1：范围 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 超出驱动器的允许范围：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="345"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 包含驱动器不允许的值；允许：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="359"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1：单台数值 %2：%3%4 超出配方的范围 %5–%6%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="370"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="382"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1：配方中没有单台数值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="373"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>配方中没有站号为 %1 的驱动器</translation>
     </message>
@@ -10548,12 +10633,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="262"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="263"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大于 %2 MB，超过配方文件的上限；不是配方文件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="270"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="271"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -10665,112 +10750,112 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../model/eol/RecipeParser.cpp" line="134"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="211"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="178"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="179"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1（%2）：&quot;value&quot; 必须是数字或文本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="194"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="195"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1（%2）：&quot;source&quot; 必须是 &quot;csv&quot; 或 &quot;operator&quot;，而不是 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="207"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1：未知步骤类型 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="221"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="222"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1：&quot;spno&quot; 必须是运行数据编号，例如 2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="234"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="235"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1：&quot;direction&quot; 必须是 &quot;cw&quot; 或 &quot;ccw&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="278"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="279"/>
         <source>%1: give either &quot;equals&quot; or limits, not both</source>
         <translation>%1：请指定 &quot;equals&quot; 或限值之一，不能同时指定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="284"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="285"/>
         <source>%1: unknown step</source>
         <translation>%1：未知步骤</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="300"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="301"/>
         <source>%1: &quot;unit&quot; must be a text (&quot;&quot; for a value without a unit)</source>
         <translation>%1：&quot;unit&quot; 必须是文本（无单位的值用 &quot;&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="303"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="304"/>
         <source>%1: a limit needs &quot;lower&quot;, &quot;upper&quot; or both</source>
         <translation>%1：限值需要 &quot;lower&quot;、&quot;upper&quot; 或两者</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="312"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="313"/>
         <source>&quot;retest&quot; must be an object</source>
         <translation>&quot;retest&quot; 必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="321"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="322"/>
         <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
         <translation>retest：&quot;maxAttempts&quot; 必须是 0（不限）到 100 的整数</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="331"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="332"/>
         <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
         <translation>retest：&quot;passedSerial&quot; 必须是 technician、refuse 或 allow，而不是 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="343"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1：未知键 &quot;%2&quot;；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="357"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; 必须是非空文本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="359"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; 必须是文本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1：&quot;%2&quot; 必须是文本列表</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="373"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="374"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1：&quot;%2&quot; 必须是非空文本列表</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1：&quot;%2&quot; 必须是数字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="409"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="410"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; 必须是列表</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="412"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="413"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; 有 %3 个条目；最多允许 %4 个</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="418"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="419"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;：每个条目都必须是对象</translation>
     </message>
@@ -12155,7 +12240,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="152"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="202"/>
         <source>no unit record %1</source>
         <translation>没有产品记录 %1</translation>
     </message>
@@ -12163,12 +12248,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="200"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="206"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>结果数据库的架构版本为 %1，比本程序所知的（%2）更新：请更新本工位的 OpenTOP；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="235"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="241"/>
         <source>the migration left a record pointing at no unit (table %1)</source>
         <translation>迁移后留下了不指向任何产品的记录（表 %1）</translation>
     </message>
@@ -12218,22 +12303,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>产品需要序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="178"/>
+        <location filename="../model/eol/ResultStore.cpp" line="190"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>产品只能以 pass、fail、error 或 aborted 结束，而不是 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="208"/>
+        <location filename="../model/eol/ResultStore.cpp" line="220"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>产品 %1（序列号 %2）从未在结果数据库中开始测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="210"/>
+        <location filename="../model/eol/ResultStore.cpp" line="222"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>产品 %1（序列号 %2）已记录为 %3；保留其记录</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="233"/>
+        <location filename="../model/eol/ResultStore.cpp" line="244"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>产品 %1（序列号 %2）在结果数据库中不处于进行中：从未开始，或已完成，或已标记为中断</translation>
     </message>
@@ -12441,7 +12526,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="345"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="344"/>
         <source>the results database is not open</source>
         <translation>结果数据库未打开</translation>
     </message>
@@ -12464,7 +12549,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="372"/>
         <source>no unit is selected</source>
         <translation>未选择产品</translation>
     </message>
@@ -12474,49 +12559,49 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>正在读取产品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="374"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在读取该产品的记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="382"/>
         <source>Open results database</source>
         <translation>打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="384"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
         <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
         <translation>SQLite 数据库 (*.db *.sqlite);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
         <source>Export units as CSV</source>
         <translation>将产品导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="394"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="399"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 台产品写入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="409"/>
         <source>Save certificate</source>
         <translation>保存检验证书</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="411"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 文件 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="416"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
         <source>Certificate written to %1</source>
         <translation>检验证书已写入 %1</translation>
     </message>
@@ -14461,12 +14546,12 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationAlarmReset</name>
     <message>
-        <location filename="../model/eol/StationAlarmReset.cpp" line="55"/>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
         <source>machine number %1: not connected to a bus</source>
         <translation>站号 %1：未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationAlarmReset.cpp" line="56"/>
+        <location filename="../model/eol/StationAlarmReset.cpp" line="57"/>
         <source>machine number %1 is not a position of the recipe</source>
         <translation>站号 %1 不是配方中的位置</translation>
     </message>
@@ -17051,27 +17136,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="106"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="113"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>不是产品记录（format 不是 &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="109"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>本程序不认识产品记录版本 %1（最高可读取 %2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="123"/>
         <source>the unit record has no serial number</source>
         <translation>产品记录没有序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="128"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="135"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>未知的产品状态 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="173"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="149"/>
+        <source>unknown variant source &quot;%1&quot;</source>
+        <translation>未知的机型来源“%1”</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="188"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
     </message>
@@ -17308,6 +17398,77 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::VariantCheck</name>
+    <message>
+        <location filename="../model/eol/VariantCheck.cpp" line="23"/>
+        <source>proving the variant (%1)</source>
+        <translation>正在证实机型（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantDecision</name>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="39"/>
+        <source>the variant probe left the drive changed: %1</source>
+        <translation>机型探测使驱动器留下改动：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="44"/>
+        <source>reported by the drive</source>
+        <translation>由驱动器报告</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="53"/>
+        <source>%1; named by %2</source>
+        <translation>%1；由 %2 指定</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="57"/>
+        <source>given for the unit by %1 (eol run --variant)</source>
+        <translation>由 %1 为此产品指定（eol run --variant）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="62"/>
+        <source>confirmed by the operator %1 (the recipe asks the operator)</source>
+        <translation>由操作员 %1 确认（配方要求操作员确认）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="67"/>
+        <source>the recipe&apos;s only variant, not proven on the bus</source>
+        <translation>配方唯一的机型，未在总线上证实</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="74"/>
+        <source>the family has no variant probe</source>
+        <translation>此系列没有机型探测</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="76"/>
+        <source>the probe leaves %1 (%2)</source>
+        <translation>探测结果仍为 %1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="81"/>
+        <source>the drive does not report its variant and it was not proven (%1)</source>
+        <translation>驱动器不报告机型，也未能证实（%1）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="82"/>
+        <source>the drive does not report its variant and it was not proven (%1); the recipe allows %2 and needs proof</source>
+        <translation>驱动器不报告机型，也未能证实（%1）；配方允许 %2，且需要证实</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="90"/>
+        <source>the drive is a %1 (%2), but %3 was given for it</source>
+        <translation>驱动器是 %1（%2），但指定的是 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/VariantDecision.cpp" line="93"/>
+        <source>a %1 (%2), the recipe allows %3</source>
+        <translation>是 %1（%2），配方允许 %3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::VariantNeed</name>
     <message>
         <location filename="../model/bus/VariantNeed.cpp" line="19"/>
@@ -17358,6 +17519,72 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/bus/VariantNeed.cpp" line="112"/>
         <source>Last time on this bus it was set as %1.</source>
         <translation>上次在此总线上设为 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantProbe</name>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="51"/>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>未知的键“%1”</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="58"/>
+        <source>needs &quot;parameter&quot;, a number &quot;value&quot; and &quot;refusedCode&quot;</source>
+        <translation>需要 &quot;parameter&quot;、数值 &quot;value&quot; 和 &quot;refusedCode&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="63"/>
+        <source>no parameter &quot;%1&quot;</source>
+        <translation>没有参数“%1”</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="67"/>
+        <source>%1 must be a readable, writable setting that no role names (never a command or a motion register)</source>
+        <translation>%1 必须是可读写、且未被任何角色使用的设定（绝不能是命令或运转寄存器）</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/VariantProbe.cpp" line="77"/>
+        <source>%1 = %2 must be allowed on some variants and refused on others</source>
+        <translation>%1 = %2 必须在部分机型允许、在其他机型拒绝</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VariantProber</name>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="30"/>
+        <source>%1 cannot be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="59"/>
+        <source>the probe %1 was not answered as the manual says: %2</source>
+        <translation>机型探测 %1 的应答与手册所述不符：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="83"/>
+        <source>%1 could not be set back to %2 after the variant probe (%3): set it to %2 before this drive is used</source>
+        <translation>机型探测后无法将 %1 改回 %2（%3）：使用此驱动器前请将其设为 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="88"/>
+        <source>%1 accepted, %2 written back</source>
+        <translation>%1 被接受，已写回 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="96"/>
+        <source>%1 refused (%2)</source>
+        <translation>%1 被拒绝（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="106"/>
+        <source>%1 does not read back as %2 after the variant probe (%3): set it to %2 before this drive is used</source>
+        <translation>机型探测后 %1 读回不是 %2（%3）：使用此驱动器前请将其设为 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="113"/>
+        <source>the probe did not decide</source>
+        <translation>探测无法判定</translation>
     </message>
 </context>
 <context>

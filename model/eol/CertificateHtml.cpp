@@ -114,9 +114,14 @@ QString CertificateHtml::html(const UnitRecord& r, const QVector<UnitRecord>& ea
                      .arg(esc(tr("This serial failed %n earlier test(s); they are listed below.",
                                  nullptr, fails)));
     }
-    section(tr("Drives"), {tr("Machine number"), tr("Model"), tr("Variant"), tr("Firmware")});
+    section(tr("Drives"),
+            {tr("Machine number"), tr("Model"), tr("Variant"), tr("How known"), tr("Firmware")});
     for (const UnitDrive& d : r.drives)
-        h += row({QString::number(d.machineNumber), d.model, d.variant, d.firmware});
+        h += row({QString::number(d.machineNumber), d.model, variantText(d),
+                  d.variantProof.isEmpty()
+                      ? variantSourceText(d.variantSource)
+                      : tr("%1: %2").arg(variantSourceText(d.variantSource), d.variantProof),
+                  d.firmware});
     h += QStringLiteral("</table>");
     section(tr("Settings"), {tr("Drive"), tr("Setting"), tr("Value"), tr("Written"),
                              tr("Read back"), tr("Verified")});
@@ -155,6 +160,32 @@ QString CertificateHtml::html(const UnitRecord& r, const QVector<UnitRecord>& ea
     }
     h += QStringLiteral("</body></html>");
     return h;
+}
+
+QString CertificateHtml::variantSourceText(VariantSource source)
+{
+    switch (source) {
+    case VariantSource::Read:
+        return tr("read from the drive");
+    case VariantSource::Probed:
+        return tr("proven by the variant probe");
+    case VariantSource::Confirmed:
+        return tr("confirmed by a person");
+    case VariantSource::Assumed:
+        return tr("ASSUMED, not proven");
+    case VariantSource::None:
+        break;
+    }
+    return tr("not known");
+}
+
+QString CertificateHtml::variantText(const UnitDrive& drive)
+{
+    if (drive.variant.isEmpty())
+        return tr("not known");
+    // An assumed variant is never shown as if it were known.
+    return drive.variantSource == VariantSource::Assumed ? tr("%1 (assumed)").arg(drive.variant)
+                                                         : drive.variant;
 }
 
 } // namespace opentop

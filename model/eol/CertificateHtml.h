@@ -19,6 +19,10 @@ public:
     static QString html(const UnitRecord& record, const QVector<UnitRecord>& earlier = {});
     static QString verdictText(UnitStatus status);   // "PASS", "FAIL", ...
     static QString limitsText(const Measurement& m); // "1450 … 1550 r/min", "≤ 2.5 A"
+    // "dbu200", "dbu200 (assumed)", "not known": an assumed variant never reads as known.
+    static QString variantText(const UnitDrive& drive);
+    // How a variant was known, in words: "proven by the variant probe", "ASSUMED, not proven".
+    static QString variantSourceText(VariantSource source);
 };
 
 } // namespace opentop

@@ -1,8 +1,9 @@
 #include "eol/EolDriveRun.h"
 
-#include "ModelLog.h"
+#include "eol/CommLossArm.h"
 #include "eol/EolTarget.h"
 #include "eol/Recipe.h"
+#include "eol/VariantCheck.h"
 #include "files/RestorePlan.h"
 #include "files/Restorer.h"
 #include "profile/ProfileRegistry.h"
@@ -15,14 +16,6 @@
 #include <QTimer>
 
 namespace opentop {
-
-namespace {
-// A drive with a communication-loss stop (the DC controller) brakes by itself this long after
-// the station's last frame while a unit runs: a killed station leaves no motor turning. Long
-// enough for a retried request on a busy bus (the station asks every drive every ~100 ms).
-constexpr double kCommLossS = 2.0;
-const QString kCommLossRole = QStringLiteral("commLossTime");
-} // namespace
 
 EolDriveRun::EolDriveRun(ModbusClient* client, const ProfileRegistry& registry, RunControl* run,
                          const RecipePosition& position, int index,
@@ -66,6 +59,12 @@ void EolDriveRun::start(std::function<void()> done)
     });
 }
 
+void EolDriveRun::setVariantEvidence(const QString& asserted, const QString& operatorName)
+{
+    m_assertedVariant = asserted;
+    m_operatorName = operatorName;
+}
+
 void EolDriveRun::identified(const DeviceInfo& info)
 {
     if (info.state != DeviceInfo::State::Present) {
@@ -78,36 +77,23 @@ void EolDriveRun::identified(const DeviceInfo& info)
                       .arg(m_position.machineNumber)
                       .arg(info.detail.isEmpty() ? DeviceInfo::stateText(info.state) : info.detail);
         if (info.state == DeviceInfo::State::Unidentified)
-            fail(why);
+            failIdentity(why);
         else
             failStation(why);
         return;
     }
     m_drive.model = info.model;
-    m_drive.variant = info.variant;
     m_drive.firmware = info.firmware;
+    m_reportedVariant = info.variant;
     if (info.family != m_position.family) {
-        fail(tr("a %1 drive, the recipe needs a %2 drive").arg(info.model, m_position.family));
+        failIdentity(
+            tr("a %1 drive, the recipe needs a %2 drive").arg(info.model, m_position.family));
         return;
     }
-    QString variant = info.variant;
-    if (variant.isEmpty() && m_position.variants.size() == 1) {
-        // The drive does not tell its variant; the recipe names exactly one.
-        variant = m_position.variants.first();
-    }
-    if (!m_position.variants.isEmpty() && !m_position.variants.contains(variant)) {
-        fail(variant.isEmpty()
-                 ? tr("the drive does not report its variant and the recipe allows %1")
-                       .arg(m_position.variants.join(QStringLiteral(", ")))
-                 : tr("variant %1, the recipe allows %2")
-                       .arg(variant, m_position.variants.join(QStringLiteral(", "))));
-        return;
-    }
-    m_drive.variant = variant;
     if (!m_position.firmware.isEmpty() && !m_position.firmware.contains(info.firmware)) {
-        fail(tr("firmware %1, the recipe allows %2")
-                 .arg(info.firmware.isEmpty() ? tr("unknown") : info.firmware,
-                      m_position.firmware.join(QStringLiteral(", "))));
+        failIdentity(tr("firmware %1, the recipe allows %2")
+                         .arg(info.firmware.isEmpty() ? tr("unknown") : info.firmware,
+                              m_position.firmware.join(QStringLiteral(", "))));
         return;
     }
     const Profile* profile = m_registry.family(m_position.family);
@@ -115,19 +101,55 @@ void EolDriveRun::identified(const DeviceInfo& info)
         fail(tr("no profile for the family %1").arg(m_position.family));
         return;
     }
+    // The variant is set once it is known (variantKnown); until then only reads are sent.
+    m_session = new DeviceSession(m_client, *profile, m_position.machineNumber, info.variant, this);
+    m_session->setLabelsInMessages(true);
+    checkStopped();
+}
+
+void EolDriveRun::checkVariant()
+{
+    VariantDecision::Evidence evidence;
+    evidence.reported = m_reportedVariant;
+    evidence.asserted = m_assertedVariant;
+    evidence.operatorName = m_operatorName;
+    auto* check = new VariantCheck(m_client, m_session->profile(), m_position, evidence, this);
+    if (!check->probeText().isEmpty())
+        setPhase(Phase::Identify, check->probeText());
+    check->run([this, check](const VariantDecision::Decision& decision) {
+        check->deleteLater();
+        if (!m_ended)
+            variantKnown(decision);
+    });
+}
+
+void EolDriveRun::variantKnown(const VariantDecision::Decision& decision)
+{
+    m_drive.variant = decision.variant;
+    m_drive.variantSource = decision.source;
+    m_drive.variantProof = decision.proof;
+    if (!decision.ok) {
+        failIdentity(decision.failure);
+        return;
+    }
     QString error;
     const std::optional<BackupDevice> target =
-        EolTarget::build(*profile, m_position, variant, m_unitValues, &error);
+        EolTarget::build(m_session->profile(), m_position, decision.variant, m_unitValues, &error);
     if (!target) {
         fail(error);
         return;
     }
     m_target = *target;
-    m_target.model = info.model;
-    m_target.firmware = info.firmware;
-    m_session = new DeviceSession(m_client, *profile, m_position.machineNumber, variant, this);
-    m_session->setLabelsInMessages(true);
-    checkStopped();
+    m_target.model = m_drive.model;
+    m_target.firmware = m_drive.firmware;
+    m_session->setVariant(decision.variant);
+    write();
+}
+
+void EolDriveRun::failIdentity(const QString& reason)
+{
+    m_identityError = true;
+    fail(reason);
 }
 
 void EolDriveRun::checkStopped()
@@ -143,7 +165,7 @@ void EolDriveRun::checkStopped()
         if (meta && !names.contains(meta->name))
             names << meta->name;
     if (names.isEmpty()) {
-        write();
+        checkVariant();
         return;
     }
     m_session->readMany(names, [this, running, alarm](const DeviceSession::ReadManyOutcome& r) {
@@ -178,7 +200,7 @@ void EolDriveRun::checkStopped()
                            "nothing was written: reset the alarm and test again"));
             return;
         }
-        write();
+        checkVariant();
     });
 }
 
@@ -275,57 +297,21 @@ void EolDriveRun::verify()
 
 void EolDriveRun::test()
 {
-    const ParameterMeta* loss = RoleEvaluator::parameter(m_session->profile(), kCommLossRole);
-    if (!loss) {
+    m_commLoss = std::make_unique<CommLossArm>(m_session);
+    if (!m_commLoss->applies()) {
         runSteps();
         return;
     }
     setPhase(Phase::Test, tr("arming the communication-loss stop"));
-    m_session->read(loss->name, [this, loss](const DeviceSession::Outcome& r) {
+    m_commLoss->arm([this](const QString& error) {
         if (m_ended)
             return;
-        if (!r.ok) {
-            fail(tr("cannot read %1: %2").arg(loss->label, r.error));
+        if (!error.isEmpty()) {
+            fail(error);
             return;
         }
-        m_commLossBefore = ValueCodec::formatNumber(r.value.number, loss->spec.decimals);
-        DeviceSession::WriteOptions options;
-        options.explicitCommand = true; // the station's safety while its motor turns
-        m_session->write(
-            loss->name, ValueCodec::formatNumber(kCommLossS, 1), options,
-            [this, loss](const DeviceSession::Outcome& w) {
-                if (m_ended)
-                    return;
-                if (!w.ok) {
-                    m_commLossBefore.clear();
-                    fail(tr("the communication-loss stop cannot be armed (%1 = %2 "
-                            "s): %3; the motor is not started without it")
-                             .arg(loss->label, ValueCodec::formatNumber(kCommLossS, 1), w.error));
-                    return;
-                }
-                runSteps();
-            });
+        runSteps();
     });
-}
-
-void EolDriveRun::disarmCommLoss(std::function<void()> then)
-{
-    const ParameterMeta* loss = RoleEvaluator::parameter(m_session->profile(), kCommLossRole);
-    if (!loss || m_commLossBefore.isEmpty()) {
-        then();
-        return;
-    }
-    // Back to what the drive held (in its working memory only: the product's stored value was
-    // never changed).
-    DeviceSession::WriteOptions options;
-    options.explicitCommand = true;
-    m_session->write(loss->name, std::exchange(m_commLossBefore, QString()), options,
-                     [then](const DeviceSession::Outcome& w) {
-                         if (!w.ok)
-                             qCWarning(lcModel)
-                                 << "communication-loss stop not restored" << w.error;
-                         then();
-                     });
 }
 
 void EolDriveRun::runSteps()
@@ -346,7 +332,7 @@ void EolDriveRun::runSteps()
     m_steps->start([this](const EolStepRunner::Result& r) {
         m_stopConfirmed = r.stopConfirmed;
         m_stopDetail = r.stopDetail;
-        disarmCommLoss([this, r] {
+        m_commLoss->disarm([this, r] {
             if (!r.ok) {
                 fail(r.failure);
                 return;

@@ -3,6 +3,7 @@
 #include "eol/EolStepRunner.h"
 #include "eol/RecipeTypes.h"
 #include "eol/UnitRecord.h"
+#include "eol/VariantDecision.h"
 #include "files/BackupDevice.h"
 
 #include <QHash>
@@ -12,6 +13,7 @@
 
 namespace opentop {
 
+class CommLossArm;
 class DeviceSession;
 struct DeviceInfo;
 class ModbusClient;
@@ -43,6 +45,10 @@ public:
                 const EolStepRunner::Timing& timing, QObject* parent = nullptr);
     ~EolDriveRun() override;
 
+    // The variant the person running the unit gave for this position (may be empty), and who
+    // that is: VariantDecision weighs it against what the drive reports or the probe proves.
+    void setVariantEvidence(const QString& asserted, const QString& operatorName);
+
     // `done` runs once, never before start() returns.
     void start(std::function<void()> done);
     // Ends the run with `reason` (the motor stopped first when it may be turning).
@@ -58,6 +64,9 @@ public:
     bool stationError() const { return m_stationError; }
     // An alarm was active before the test: a reset may let the unit be tested again.
     bool alarmLatched() const { return m_alarmLatched; }
+    // The failure is the drive's identity (no drive, another family, a variant or firmware
+    // the recipe does not allow, a variant not proven): a station error, not the unit's test.
+    bool identityError() const { return m_identityError; }
     bool stopConfirmed() const { return m_stopConfirmed; }
     QString stopDetail() const { return m_stopDetail; }
     const UnitDrive& drive() const { return m_drive; }
@@ -72,12 +81,14 @@ signals:
 private:
     void identified(const DeviceInfo& info);
     void checkStopped();
+    void checkVariant();
+    void variantKnown(const VariantDecision::Decision& decision);
+    void failIdentity(const QString& reason);
     void write();
     void written(const RestorePlan& plan);
     void verify();
     void test();
     void runSteps();
-    void disarmCommLoss(std::function<void()> then);
     void setPhase(Phase phase, const QString& text);
     void fail(const QString& reason);
     void failStation(const QString& reason);
@@ -93,6 +104,10 @@ private:
     std::function<void()> m_done;
     Phase m_phase = Phase::Identify;
     bool m_ok = false;
+    bool m_identityError = false;
+    QString m_reportedVariant;
+    QString m_assertedVariant;
+    QString m_operatorName;
     bool m_ended = false;
     QString m_failure;
     bool m_stationError = false;
@@ -104,7 +119,7 @@ private:
     QVector<WrittenValue> m_written;
     QVector<Measurement> m_measurements;
     DeviceSession* m_session = nullptr;
-    QString m_commLossBefore; // the drive's own value while the station's is armed
+    std::unique_ptr<CommLossArm> m_commLoss;
     Restorer* m_restorer = nullptr;
     EolStepRunner* m_steps = nullptr;
 };

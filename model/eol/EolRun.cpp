@@ -84,6 +84,8 @@ void EolRun::startDrives()
         auto* drive = new EolDriveRun(m_client, m_registry, m_run, position, i,
                                       m_options.unitValues.value(position.machineNumber),
                                       m_options.timing, this);
+        drive->setVariantEvidence(m_options.assertedVariants.value(position.machineNumber),
+                                  m_options.operatorName);
         connect(drive, &EolDriveRun::phaseChanged, this, &EolRun::phaseChanged);
         connect(drive, &EolDriveRun::measured, this, &EolRun::measured);
         connect(drive, &EolDriveRun::speedSampled, this, &EolRun::speedSampled);

@@ -37,6 +37,10 @@ public:
         QString recipeChecksum; // as the recipe file carries it
         // This unit's per-unit values: machine number → parameter → engineering value.
         QHash<int, QHash<QString, double>> unitValues;
+        // Variants stated by the person running the unit (eol run --variant), by machine
+        // number: taken as confirmed when the drive cannot prove its own, refused when it does
+        // and differs.
+        QHash<int, QString> assertedVariants;
         EolStepRunner::Timing timing;
         ResultWriter* writer = nullptr; // none: nothing recorded
         TrafficLog* traffic = nullptr;  // decoded traffic around a failure goes into the record

@@ -150,6 +150,18 @@ void RecipeChecker::checkPosition(const Recipe& recipe, int index,
         }
         variants.insert(id);
     }
+    if (!position.variantProof.isEmpty() && position.variantProof != QLatin1String("required") &&
+        position.variantProof != QLatin1String("operator"))
+        *problems << RecipeProblem{
+            path + QStringLiteral(".variantProof"),
+            tr("%1: variantProof \"%2\" is not known; use \"required\" or \"operator\" (or "
+               "leave it out)")
+                .arg(where, position.variantProof)};
+    else if (position.variantProof == QLatin1String("operator") && position.variants.size() != 1)
+        *problems << RecipeProblem{path + QStringLiteral(".variantProof"),
+                                   tr("%1: variantProof \"operator\" needs exactly one allowed "
+                                      "variant for the operator to confirm")
+                                       .arg(where)};
     if (variants.size() != position.variants.size() ||
         std::any_of(position.variants.begin(), position.variants.end(),
                     [&](const QString& id) { return !profile->variant(id); }))

@@ -27,13 +27,13 @@ QByteArray scalar(const QJsonValue& value)
 QStringList orderedKeys(const QJsonObject& object)
 {
     static const char* const order[] = {
-        "format",       "formatVersion", "product",  "revision",     "description", "machineNumber",
-        "name",         "family",        "variants", "firmware",     "type",        "parameter",
-        "statistic",    "spno",          "speed",    "direction",    "target",      "tolerance",
-        "value",        "min",           "max",      "lower",        "upper",       "equals",
-        "unit",         "timeout",       "duration", "deceleration", "margin",      "source",
-        "settings",     "unitValues",    "steps",    "limits",       "positions",   "maxAttempts",
-        "passedSerial", "retest",        "checksum"};
+        "format",    "formatVersion", "product",    "revision",     "description",  "machineNumber",
+        "name",      "family",        "variants",   "variantProof", "firmware",     "type",
+        "parameter", "statistic",     "spno",       "speed",        "direction",    "target",
+        "tolerance", "value",         "min",        "max",          "lower",        "upper",
+        "equals",    "unit",          "timeout",    "duration",     "deceleration", "margin",
+        "source",    "settings",      "unitValues", "steps",        "limits",       "positions",
+        "maxAttempts", "passedSerial", "retest",    "checksum"};
     QStringList keys;
     for (const char* k : order) {
         if (object.contains(QLatin1String(k)))
@@ -192,6 +192,7 @@ QJsonObject positionObject(const RecipePosition& p)
         o.insert(QStringLiteral("variants"), QJsonArray::fromStringList(p.variants));
     if (!p.firmware.isEmpty())
         o.insert(QStringLiteral("firmware"), QJsonArray::fromStringList(p.firmware));
+    insertText(o, "variantProof", p.variantProof);
     if (!unitValues.isEmpty())
         o.insert(QStringLiteral("unitValues"), unitValues);
     return o;

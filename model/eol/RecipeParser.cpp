@@ -123,8 +123,8 @@ bool RecipeParser::readPosition(const QJsonObject& o, int index, RecipePosition*
     if (!onlyKeys(o, at,
                   {QStringLiteral("machineNumber"), QStringLiteral("name"),
                    QStringLiteral("family"), QStringLiteral("variants"), QStringLiteral("firmware"),
-                   QStringLiteral("settings"), QStringLiteral("unitValues"),
-                   QStringLiteral("steps")}))
+                   QStringLiteral("variantProof"), QStringLiteral("settings"),
+                   QStringLiteral("unitValues"), QStringLiteral("steps")}))
         return false;
     const QJsonValue slave = o.value(QStringLiteral("machineNumber"));
     const double n = slave.toDouble(-1);
@@ -135,7 +135,8 @@ bool RecipeParser::readPosition(const QJsonObject& o, int index, RecipePosition*
     if (!text(o, "name", at, &position->name, false) ||
         !text(o, "family", at, &position->family, true) ||
         !texts(o, "variants", at, &position->variants) ||
-        !texts(o, "firmware", at, &position->firmware))
+        !texts(o, "firmware", at, &position->firmware) ||
+        !text(o, "variantProof", at, &position->variantProof, false))
         return false;
     QJsonArray list;
     if (!array(o, "settings", at, &list))

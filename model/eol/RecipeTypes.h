@@ -101,6 +101,11 @@ struct RecipePosition
     QString name;         // "left conveyor"; optional
     QString family;       // "dbu", "dcpid"
     QStringList variants; // allowed variants; empty: any variant of the family
+    // When the drive does not report its variant and the profile's probe does not prove it:
+    // "" (a single allowed variant is taken, recorded as assumed), "required" (the unit fails
+    // as an identity error), "operator" (the operator running the unit confirms the single
+    // allowed variant; the record keeps who). RecipeVariantCheck decides.
+    QString variantProof;
     QStringList firmware; // allowed firmware versions ("1.5"); empty: any
     QVector<RecipeSetting> settings;
     QVector<RecipeUnitValue> unitValues;

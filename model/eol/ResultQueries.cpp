@@ -51,6 +51,13 @@ bool fail(const QSqlQuery& q, QString* error)
 
 } // namespace
 
+QString ResultQueries::sourceColumns() const
+{
+    // How a drive's variant was known came with schema 4.
+    return database_.schemaVersion() >= 4 ? QStringLiteral("variant_source, variant_proof")
+                                          : QStringLiteral("NULL, NULL");
+}
+
 QString ResultQueries::unitColumns() const
 {
     // Attempt numbers came with schema 5.
@@ -82,6 +89,50 @@ QString ResultFilter::serialLike() const
             like += c;
     }
     return like;
+}
+
+UnitDrive ResultQueries::driveFrom(const QSqlQuery& q, int first)
+{
+    UnitDrive d;
+    d.machineNumber = q.value(first).toInt();
+    d.model = q.value(first + 1).toString();
+    d.variant = q.value(first + 2).toString();
+    d.firmware = q.value(first + 3).toString();
+    // NULL on rows from before schema version 4: nothing was said then.
+    d.variantSource =
+        variantSourceFromName(q.value(first + 4).toString()).value_or(VariantSource::None);
+    d.variantProof = q.value(first + 5).toString();
+    return d;
+}
+
+bool ResultQueries::addDrives(QVector<UnitRecord>* units, QString* error) const
+{
+    QHash<QString, int> index;
+    for (int i = 0; i < units->size(); ++i)
+        index.insert(units->at(i).id, i);
+    const QStringList ids = index.keys();
+    QSqlQuery q(database_.db());
+    q.setForwardOnly(true);
+    constexpr int kChunk = 500; // well under every engine's limit of bound values
+    for (int from = 0; from < ids.size(); from += kChunk) {
+        const QStringList chunk = ids.mid(from, kChunk);
+        QStringList marks;
+        for (int i = 0; i < chunk.size(); ++i)
+            marks << QStringLiteral("?");
+        q.prepare(QStringLiteral("SELECT unit_id, machine_number, model, variant, firmware,"
+                                 " %2 FROM unit_drives"
+                                 " WHERE unit_id IN (%1) ORDER BY unit_id, drive_index")
+                      .arg(marks.join(QStringLiteral(", ")), sourceColumns()));
+        for (const QString& id : chunk)
+            q.addBindValue(id);
+        if (!q.exec()) {
+            fail(q, error);
+            return false;
+        }
+        while (q.next())
+            (*units)[index.value(q.value(0).toString())].drives.append(driveFrom(q, 1));
+    }
+    return true;
 }
 
 std::optional<QVector<UnitRecord>> ResultQueries::find(const ResultFilter& f, QString* error) const
@@ -157,14 +208,17 @@ std::optional<UnitRecord> ResultQueries::load(const QString& unitId, QString* er
         q.addBindValue(unitId);
         return q.exec();
     };
-    if (!select("SELECT machine_number, model, variant, firmware FROM unit_drives"
-                " WHERE unit_id = ? ORDER BY drive_index")) {
+    const QByteArray drives = QStringLiteral("SELECT machine_number, model, variant, firmware,"
+                                             " %1 FROM unit_drives WHERE unit_id = ?"
+                                             " ORDER BY drive_index")
+                                  .arg(sourceColumns())
+                                  .toLatin1();
+    if (!select(drives.constData())) {
         fail(q, error);
         return std::nullopt;
     }
     while (q.next())
-        r.drives.append({q.value(0).toInt(), q.value(1).toString(), q.value(2).toString(),
-                         q.value(3).toString()});
+        r.drives.append(driveFrom(q, 0));
     if (!select("SELECT machine_number, parameter, label, value_text, was_written, verified,"
                 " read_back FROM written_values WHERE unit_id = ? ORDER BY seq")) {
         fail(q, error);

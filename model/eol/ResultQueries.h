@@ -8,6 +8,8 @@
 #include <QSet>
 #include <optional>
 
+class QSqlQuery;
+
 namespace opentop {
 
 class ResultDatabase;
@@ -40,6 +42,8 @@ public:
 
     // The units' own rows (no drives, values or traffic), oldest first. nullopt on an error.
     std::optional<QVector<UnitRecord>> find(const ResultFilter& filter, QString* error) const;
+    // Adds each unit's drives (model, variant and how it was known) to units `find` gave.
+    bool addDrives(QVector<UnitRecord>* units, QString* error) const;
     // One whole record; nullopt with *error when there is none or on an error.
     std::optional<UnitRecord> load(const QString& unitId, QString* error) const;
     // The serial's records begun before `record` (own rows), oldest first: what its
@@ -66,7 +70,9 @@ public:
                                                QString* error) const;
 
 private:
-    QString unitColumns() const; // the units' columns unitFrom() reads
+    QString unitColumns() const;   // the units' columns unitFrom() reads
+    QString sourceColumns() const; // a drive's variant source and proof, or NULLs
+    static UnitDrive driveFrom(const QSqlQuery& q, int first);
 
     ResultDatabase& database_;
 };

@@ -102,6 +102,12 @@ const QVector<ResultSchema::Migration>& ResultSchema::migrations()
           QStringLiteral("ALTER TABLE units ADD COLUMN lease_id VARCHAR(40)"),
           QStringLiteral("CREATE INDEX units_by_status ON units (status)")},
          {}},
+        {4,
+         QStringLiteral("how each drive's variant was known: read, probed, confirmed, assumed"),
+         // NULL on rows from before: nothing was said of the variant's proof then.
+         {QStringLiteral("ALTER TABLE unit_drives ADD COLUMN variant_source VARCHAR(20)"),
+          QStringLiteral("ALTER TABLE unit_drives ADD COLUMN variant_proof TEXT")},
+         {}},
         {5,
          QStringLiteral("station errors kept apart from verdicts; attempt numbers"),
          {// PostgreSQL names a column's CHECK <table>_<column>_check.

@@ -131,12 +131,24 @@ bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
         if (!run(q, error))
             return false;
     }
-    q.prepare(QStringLiteral("INSERT INTO unit_drives (unit_id, drive_index, machine_number, "
-                             "model, variant, firmware) VALUES (?, ?, ?, ?, ?, ?)"));
+    // How a variant was known came with schema 4.
+    const bool sources = database_.schemaVersion() >= 4;
+    q.prepare(sources ? QStringLiteral("INSERT INTO unit_drives (unit_id, drive_index,"
+                                       " machine_number, model, variant, firmware, variant_source,"
+                                       " variant_proof) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
+                      : QStringLiteral("INSERT INTO unit_drives (unit_id, drive_index,"
+                                       " machine_number, model, variant, firmware)"
+                                       " VALUES (?, ?, ?, ?, ?, ?)"));
     for (int i = 0; i < r.drives.size(); ++i) {
         const UnitDrive& d = r.drives[i];
-        bind(q, {QVariant(r.id), QVariant(i), QVariant(d.machineNumber), QVariant(d.model),
-                 QVariant(d.variant), QVariant(d.firmware)});
+        QVariantList values{QVariant(r.id),      QVariant(i),         QVariant(d.machineNumber),
+                            QVariant(d.model),   QVariant(d.variant), QVariant(d.firmware)};
+        if (sources)
+            values << QVariant(variantSourceName(d.variantSource)) << QVariant(d.variantProof);
+        for (const QVariant& v : values) // as bind() does: a null text is an empty one
+            q.addBindValue(v.typeId() == QMetaType::QString && v.toString().isNull()
+                               ? QVariant(QString(QLatin1String("")))
+                               : v);
         if (!run(q, error))
             return false;
     }

@@ -16,7 +16,35 @@ constexpr StatusName kStatusNames[] = {
     {UnitStatus::Aborted, "aborted"}, {UnitStatus::Error, "error"},
 };
 
+struct SourceName
+{
+    VariantSource source;
+    const char* name;
+};
+
+constexpr SourceName kSourceNames[] = {
+    {VariantSource::None, ""},           {VariantSource::Read, "read"},
+    {VariantSource::Probed, "probed"},   {VariantSource::Confirmed, "confirmed"},
+    {VariantSource::Assumed, "assumed"},
+};
+
 } // namespace
+
+QString variantSourceName(VariantSource source)
+{
+    for (const auto& s : kSourceNames)
+        if (s.source == source)
+            return QLatin1String(s.name);
+    return QString();
+}
+
+std::optional<VariantSource> variantSourceFromName(const QString& name)
+{
+    for (const auto& s : kSourceNames)
+        if (name == QLatin1String(s.name))
+            return s.source;
+    return std::nullopt;
+}
 
 QString unitStatusName(UnitStatus status)
 {
@@ -37,7 +65,8 @@ std::optional<UnitStatus> unitStatusFromName(const QString& name)
 bool UnitDrive::operator==(const UnitDrive& o) const
 {
     return machineNumber == o.machineNumber && model == o.model && variant == o.variant &&
-           firmware == o.firmware;
+           firmware == o.firmware && variantSource == o.variantSource &&
+           variantProof == o.variantProof;
 }
 
 bool WrittenValue::operator==(const WrittenValue& o) const

@@ -28,13 +28,29 @@ QString unitStatusName(UnitStatus status); // "running", "interrupted", "pass", 
                                            // "error"
 std::optional<UnitStatus> unitStatusFromName(const QString& name);
 
+// How a drive's variant was known. Only `read` and `probed` are proof on the bus; `assumed` is
+// never shown as known (the certificate says "assumed").
+enum class VariantSource
+{
+    None,      // no variant: the family has none, or the recipe allows any and none was found
+    Read,      // the drive reports it (its identification)
+    Probed,    // the profile's variant probe proved it (UnitDrive::variantProof says how)
+    Confirmed, // a person stated it (the record says who): eol run --variant, a recipe option
+    Assumed    // the recipe's only variant, taken without proof
+};
+
+QString variantSourceName(VariantSource source); // "", "read", "probed", "confirmed", "assumed"
+std::optional<VariantSource> variantSourceFromName(const QString& name);
+
 // A drive of the unit, at its fixture position (the machine number set on its switches).
 struct UnitDrive
 {
     int machineNumber = 0;
     QString model;   // family/model, e.g. "DBU"
-    QString variant; // e.g. "DBU200"
+    QString variant; // e.g. "dbu200"
     QString firmware;
+    VariantSource variantSource = VariantSource::None;
+    QString variantProof; // the probe and its answer, or who confirmed it
     bool operator==(const UnitDrive& o) const;
 };
 

@@ -39,11 +39,18 @@ QDateTime UnitRecordJson::timeFromText(const QString& text)
 QJsonObject UnitRecordJson::toJson(const UnitRecord& r)
 {
     QJsonArray drives;
-    for (const UnitDrive& d : r.drives)
-        drives.append(QJsonObject{{QStringLiteral("machineNumber"), d.machineNumber},
-                                  {QStringLiteral("model"), d.model},
-                                  {QStringLiteral("variant"), d.variant},
-                                  {QStringLiteral("firmware"), d.firmware}});
+    for (const UnitDrive& d : r.drives) {
+        QJsonObject o{{QStringLiteral("machineNumber"), d.machineNumber},
+                      {QStringLiteral("model"), d.model},
+                      {QStringLiteral("variant"), d.variant},
+                      {QStringLiteral("firmware"), d.firmware}};
+        // How the variant was known: "read", "probed", "confirmed" or "assumed".
+        if (d.variantSource != VariantSource::None)
+            o.insert(QStringLiteral("variantSource"), variantSourceName(d.variantSource));
+        if (!d.variantProof.isEmpty())
+            o.insert(QStringLiteral("variantProof"), d.variantProof);
+        drives.append(o);
+    }
     QJsonArray written;
     for (const WrittenValue& w : r.writtenValues)
         written.append(QJsonObject{{QStringLiteral("machineNumber"), w.machineNumber},
@@ -131,10 +138,18 @@ std::optional<UnitRecord> UnitRecordJson::fromJson(const QJsonObject& json, QStr
     r.failureReason = json.value(QStringLiteral("failureReason")).toString();
     for (const QJsonValue& v : json.value(QStringLiteral("drives")).toArray()) {
         const QJsonObject o = v.toObject();
-        r.drives.append({o.value(QStringLiteral("machineNumber")).toInt(),
-                         o.value(QStringLiteral("model")).toString(),
-                         o.value(QStringLiteral("variant")).toString(),
-                         o.value(QStringLiteral("firmware")).toString()});
+        UnitDrive d;
+        d.machineNumber = o.value(QStringLiteral("machineNumber")).toInt();
+        d.model = o.value(QStringLiteral("model")).toString();
+        d.variant = o.value(QStringLiteral("variant")).toString();
+        d.firmware = o.value(QStringLiteral("firmware")).toString();
+        const QString source = o.value(QStringLiteral("variantSource")).toString();
+        const std::optional<VariantSource> known = variantSourceFromName(source);
+        if (!known)
+            return fail(tr("unknown variant source \"%1\"").arg(source));
+        d.variantSource = *known;
+        d.variantProof = o.value(QStringLiteral("variantProof")).toString();
+        r.drives.append(d);
     }
     for (const QJsonValue& v : json.value(QStringLiteral("writtenValues")).toArray()) {
         const QJsonObject o = v.toObject();

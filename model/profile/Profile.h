@@ -123,6 +123,9 @@ public:
     // How the device's speed loop is tuned (model/tuning/TuningSpec reads and checks it);
     // empty when it has none.
     QJsonObject tuning;
+    // How a drive that does not report its variant proves it (profile/VariantProbe reads and
+    // checks it); empty when the family needs none.
+    QJsonObject variantProbe;
     QVector<DecelerationKnob> decelerationKnobs;
     QVector<StatusLedEntry> statusLed;
     // Texts whose setting references were resolved (SettingReference), as written, by their

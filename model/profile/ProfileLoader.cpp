@@ -4,6 +4,7 @@
 #include "profile/JsonReader.h"
 #include "profile/ParameterReader.h"
 #include "profile/SettingReference.h"
+#include "profile/VariantProbe.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -47,7 +48,7 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
              QStringLiteral("readBlocks"), QStringLiteral("groups"), QStringLiteral("codeTables"),
              QStringLiteral("parameters"), QStringLiteral("roles"), QStringLiteral("tuning"),
              QStringLiteral("decelerationKnobs"), QStringLiteral("statusLed"),
-             QStringLiteral("address")},
+             QStringLiteral("address"), QStringLiteral("variantProbe")},
             tr("top level")))
         return false;
     if (json.integer(root, QStringLiteral("schema")).value_or(0) != 1)
@@ -57,6 +58,7 @@ bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
     p->vendor = json.string(root, QStringLiteral("vendor"), false).value_or(QString());
     p->manual = json.string(root, QStringLiteral("manual"), false).value_or(QString());
     p->tuning = root.value(QStringLiteral("tuning")).toObject(); // checked by TuningSpec
+    p->variantProbe = root.value(QStringLiteral("variantProbe")).toObject();
     if (json.failed())
         return false;
     static const QRegularExpression idRe(QStringLiteral("^[a-z][a-z0-9_]*$"));
@@ -460,6 +462,8 @@ std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QSt
     if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile) ||
         !readDecelerationKnobs(root, json, &profile) || !readStatusLed(root, json, &profile))
         return failWith(detail);
+    if (const QString probe = VariantProbe::check(profile, profile.variantProbe); !probe.isEmpty())
+        return failWith(probe);
     if (const QString unknown = SettingReference::firstUnknown(profile); !unknown.isEmpty())
         return failWith(tr("texts: {setting:…} names no parameter (%1)").arg(unknown));
     return profile;

@@ -324,8 +324,10 @@ void DeviceSession::explainFailure(const ModbusResult& result, Outcome outcome, 
                                 outcome.deviceError = why.code;
                                 outcome.error += QStringLiteral(" — ") + why.code;
                             }
-                            if (why.entry)
+                            if (why.entry) {
                                 outcome.explanation = why.entry->explained();
+                                outcome.deviceCode = int(why.entry->code);
+                            }
                             done(outcome);
                         });
 }

@@ -41,6 +41,7 @@ public:
         ParamValue value;    // the value read (or read back after a write)
         QString error;       // what went wrong, for people
         QString deviceError; // decoded device error register, when there is one
+        int deviceCode = -1; // its code (the profile's code table), -1 when there is none
         // What the device's error code means and what to do (the profile's words), when known.
         QString explanation;
         // Accepted but outside the recommended range: ValueCodec::recommendationWarning.

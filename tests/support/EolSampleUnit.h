@@ -36,8 +36,11 @@ inline UnitRecord eolSampleUnit(const QString& serial, UnitStatus status = UnitS
     r.recipeRevision = QStringLiteral("7b");
     r.recipeChecksum = QStringLiteral("sha256:9f86d081884c7d659a2feaa0c55ad015");
     r.status = status;
-    r.drives = {{1, QStringLiteral("DBU"), QStringLiteral("DBU200"), QStringLiteral("1.07")},
-                {2, QStringLiteral("DBU"), QStringLiteral("DBU400"), QStringLiteral("1.10")}};
+    r.drives = {{1, QStringLiteral("DBU"), QStringLiteral("DBU200"), QStringLiteral("1.07"),
+                 VariantSource::Probed,
+                 QStringLiteral("Speed lower limit = 280 r/min accepted, 0 written back")},
+                {2, QStringLiteral("DBU"), QStringLiteral("DBU400"), QStringLiteral("1.10"),
+                 VariantSource::Assumed, QStringLiteral("the recipe's only variant")}};
     r.writtenValues = {{1, QStringLiteral("spno2.speed"), QStringLiteral("Speed 2"),
                         QStringLiteral("1500 r/min"), true, true, QStringLiteral("1500 r/min")},
                        {1, QStringLiteral("accel"), QStringLiteral("Acceleration time"),

@@ -408,7 +408,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="472"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="477"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
@@ -506,7 +506,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="399"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="398"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>%n unit written to %1</numerusform>

@@ -112,7 +112,11 @@ TEST_F(ResultDatabaseTest, StationErrorsMigrationKeepsUnitsChildrenAndForeignKey
     EXPECT_EQ(db->schemaVersion(), ResultSchema::currentVersion());
     const auto kept = ResultQueries(*db).load(before.id, &error);
     ASSERT_TRUE(kept) << error.toStdString();
-    EXPECT_EQ(kept->drives, before.drives);
+    ASSERT_EQ(kept->drives.size(), before.drives.size());
+    for (int i = 0; i < before.drives.size(); ++i) { // a version 3 row: no variant source yet
+        EXPECT_EQ(kept->drives[i].variant, before.drives[i].variant);
+        EXPECT_EQ(kept->drives[i].firmware, before.drives[i].firmware);
+    }
     EXPECT_EQ(kept->measurements, before.measurements);
     EXPECT_EQ(kept->attempt, 0) << "recorded before attempts were counted";
     EXPECT_EQ(scalar(*db, QStringLiteral("PRAGMA foreign_keys")).toInt(), 1);
