@@ -1,6 +1,7 @@
 #include "eol/EolStation.h"
 
 #include "ModbusClient.h"
+#include "access/StationAccess.h"
 #include "eol/RecipeChecker.h"
 #include "eol/RecipeFile.h"
 #include "eol/ResultUrl.h"
@@ -23,8 +24,10 @@ constexpr int kLastUnits = 50;
 EolStation::EolStation(QObject* parent)
     : QObject(parent)
     , m_writer(std::make_unique<ResultWriter>())
+    , m_access(new StationAccess(m_writer.get(), this))
     , m_station(QSysInfo::machineHostName())
 {
+    m_access->setStation(m_station);
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &EolStation::retryUnsavedNow);
     connect(m_writer.get(), &ResultWriter::waitingChanged, this,
@@ -65,6 +68,8 @@ bool EolStation::loadRecipe(const QString& path, QStringList* problems)
     m_hasRecipe = true;
     m_safe = false; // its positions are made safe before its first unit
     m_csv.reset();
+    if (m_writer->isOpen())
+        m_access->refresh(m_checksum); // is this checksum approved?
     return true;
 }
 
@@ -111,6 +116,7 @@ void EolStation::openDatabase(const QString& url)
         if (o.ok) {
             m_dbError.clear();
             m_openDelayS = 2;
+            m_access->refresh(m_checksum);
             if (!o.interrupted.isEmpty()) {
                 m_interrupted = o.interrupted;
                 emit interruptedFound(o.interrupted);
@@ -131,6 +137,8 @@ bool EolStation::openDatabaseAndWait(const QString& url, QString* error)
     const ResultWriter::Opened o = m_writer->openAndWait(databaseLocation(url), m_station);
     if (!o.ok && error)
         *error = o.error;
+    if (o.ok)
+        m_access->refresh(m_checksum);
     if (o.ok && !o.interrupted.isEmpty()) {
         m_interrupted = o.interrupted;
         emit interruptedFound(o.interrupted);
@@ -146,6 +154,7 @@ bool EolStation::setStation(const QString& station)
     if (name == m_station)
         return true;
     m_station = name;
+    m_access->setStation(name);
     if (m_writer->isOpen())
         openDatabase(m_dbUrl); // the lease names the station
     return true;
@@ -153,12 +162,14 @@ bool EolStation::setStation(const QString& station)
 
 bool EolStation::hasDatabase() const
 {
-    return m_writer->isOpen();
+    // Open and its users read: whether units need a login is known before the first scan.
+    return m_writer->isOpen() && m_access->state() != StationAccess::State::Unknown;
 }
 
 bool EolStation::isOpeningDatabase() const
 {
-    return m_writer->isOpening();
+    return m_writer->isOpening() ||
+           (m_writer->isOpen() && m_access->state() == StationAccess::State::Unknown);
 }
 
 QString EolStation::databaseText() const
@@ -201,6 +212,14 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
                            .arg(m_dbError);
         return false;
     }
+    const QString refused = m_access->runRefusal(m_recipe.product, m_recipe.revision);
+    if (!refused.isEmpty()) {
+        *error = refused;
+        if (m_access->user())
+            m_access->audit(QStringLiteral("refused"),
+                            tr("run-units: serial %1: %2").arg(serial.trimmed(), refused));
+        return false;
+    }
     if (!client) {
         *error = tr("not connected to a bus");
         return false;
@@ -216,8 +235,12 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     EolRun::Options options;
     options.serial = serial.trimmed();
     options.station = m_station;
-    options.operatorName = m_operator;
+    options.operatorName = m_access->isManaged() ? m_access->operatorName() : m_operator;
     options.recipeChecksum = m_checksum;
+    if (m_access->isManaged() && m_access->approval()) {
+        options.approvalId = m_access->approval()->id;
+        options.approver = m_access->approval()->approver;
+    }
     options.unitValues = typed;
     options.timing = m_timing;
     options.writer = m_writer.get();
@@ -322,6 +345,7 @@ void EolStation::finished(const UnitRecord& record)
     } else {
         count(record);
     }
+    m_access->refresh(m_checksum); // an approval superseded meanwhile stops the next unit
     m_last.prepend(record);
     if (m_last.size() > kLastUnits)
         m_last.removeLast();

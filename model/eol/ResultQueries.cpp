@@ -16,6 +16,14 @@ const char* const kUnitColumns =
     "unit_id, serial, station, operator_name, started_utc, ended_utc, recipe_name,"
     " recipe_revision, recipe_checksum, status, failure_reason";
 
+// The approval columns exist from schema version 6 on (older databases read as unapproved).
+QString unitColumns(const ResultDatabase& db)
+{
+    return QLatin1String(kUnitColumns) + (db.schemaVersion() >= 6
+                                              ? QStringLiteral(", approval_id, approver")
+                                              : QStringLiteral(", NULL, NULL"));
+}
+
 UnitRecord unitFrom(const QSqlQuery& q)
 {
     UnitRecord r;
@@ -31,6 +39,8 @@ UnitRecord unitFrom(const QSqlQuery& q)
     // A status this program does not know is shown as not proven, never as a pass.
     r.status = unitStatusFromName(q.value(9).toString()).value_or(UnitStatus::Interrupted);
     r.failureReason = q.value(10).toString();
+    r.approvalId = q.value(11).toString();
+    r.approver = q.value(12).toString();
     return r;
 }
 
@@ -99,7 +109,7 @@ std::optional<QVector<UnitRecord>> ResultQueries::find(const ResultFilter& f, QS
         add("status = ?", unitStatusName(*f.status));
     if (!f.station.isEmpty())
         add("station = ?", f.station);
-    QString sql = QStringLiteral("SELECT %1 FROM units").arg(QLatin1String(kUnitColumns));
+    QString sql = QStringLiteral("SELECT %1 FROM units").arg(unitColumns(database_));
     if (!where.isEmpty())
         sql += QStringLiteral(" WHERE ") + where.join(QStringLiteral(" AND "));
     // The newest `limit` when limited, returned oldest first like the rest.
@@ -130,8 +140,7 @@ std::optional<UnitRecord> ResultQueries::load(const QString& unitId, QString* er
 {
     QSqlQuery q(database_.db());
     q.setForwardOnly(true);
-    q.prepare(
-        QStringLiteral("SELECT %1 FROM units WHERE unit_id = ?").arg(QLatin1String(kUnitColumns)));
+    q.prepare(QStringLiteral("SELECT %1 FROM units WHERE unit_id = ?").arg(unitColumns(database_)));
     q.addBindValue(unitId);
     if (!q.exec()) {
         fail(q, error);

@@ -85,17 +85,25 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
         return false;
     QSqlQuery q(database_.db());
     const bool leases = hasLeases();
-    q.prepare(
-        QStringLiteral("INSERT INTO units (unit_id, serial, station, operator_name, started_utc,"
-                       " ended_utc, recipe_name, recipe_revision, recipe_checksum, status,"
-                       " failure_reason%1) VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', ''%2)")
-            .arg(leases ? QStringLiteral(", lease_id") : QString(),
-                 leases ? QStringLiteral(", ?") : QString()));
+    const bool approvals = database_.schemaVersion() >= 6;
+    q.prepare(QStringLiteral(
+                  "INSERT INTO units (unit_id, serial, station, operator_name, started_utc,"
+                  " ended_utc, recipe_name, recipe_revision, recipe_checksum, status,"
+                  " failure_reason%1%3) VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', ''%2%4)")
+                  .arg(leases ? QStringLiteral(", lease_id") : QString(),
+                       leases ? QStringLiteral(", ?") : QString(),
+                       approvals ? QStringLiteral(", approval_id, approver") : QString(),
+                       approvals ? QStringLiteral(", ?, ?") : QString()));
     bind(q, {record.id, record.serial, record.station, record.operatorName,
              UnitRecordJson::timeText(record.started), record.recipeName, record.recipeRevision,
              record.recipeChecksum});
     if (leases)
         q.addBindValue(lease_.isEmpty() ? QVariant(QMetaType::fromType<QString>()) : lease_);
+    if (approvals) {
+        const QVariant none(QMetaType::fromType<QString>());
+        q.addBindValue(record.approvalId.isEmpty() ? none : QVariant(record.approvalId));
+        q.addBindValue(record.approver.isEmpty() ? none : QVariant(record.approver));
+    }
     if (!run(q, error) || !database_.commit(error)) {
         database_.rollback();
         return false;

@@ -71,6 +71,10 @@ struct UnitRecord
     QString recipeName;
     QString recipeRevision;
     QString recipeChecksum;
+    // The recipe approval the unit ran under (access/RecipeApprovals) and its approver; empty
+    // on a station without users (unmanaged) and on records from before approvals.
+    QString approvalId;
+    QString approver;
     UnitStatus status = UnitStatus::Running;
     QString failureReason; // the first failure, in words; empty for a pass
     QVector<UnitDrive> drives;
