@@ -179,8 +179,8 @@ void EolResultsCommand::printUnits(CliContext& context, const QVector<UnitRecord
         out << tr("no unit matches") << Qt::endl;
         return;
     }
-    TextTable table({tr("started"), tr("serial"), tr("recipe"), tr("station"), tr("operator"),
-                     tr("verdict"), tr("time"), tr("reason")});
+    TextTable table({tr("started"), tr("serial"), tr("recipe"), tr("approved by"), tr("station"),
+                     tr("operator"), tr("verdict"), tr("time"), tr("reason")});
     for (const UnitRecord& u : units) {
         const QString seconds =
             u.ended.isValid()
@@ -188,11 +188,11 @@ void EolResultsCommand::printUnits(CliContext& context, const QVector<UnitRecord
                       QStringLiteral(" s")
                 : QString();
         table.addRow({localTime(u.started), u.serial,
-                      tr("%1 rev. %2").arg(u.recipeName, u.recipeRevision), u.station,
+                      tr("%1 rev. %2").arg(u.recipeName, u.recipeRevision), u.approver, u.station,
                       u.operatorName, CertificateHtml::verdictText(u.status), seconds,
                       u.isPass() ? QString() : YieldReport::reasonOf(u)});
     }
-    table.setRightAligned(6);
+    table.setRightAligned(7);
     table.print(out);
     out << trn("%n unit(s)", int(units.size())) << Qt::endl;
 }

@@ -1,6 +1,8 @@
 #include "EolRunCommand.h"
 
 #include "CliContext.h"
+#include "CliIdentity.h"
+#include "EolRunIdentity.h"
 #include "EolSupport.h"
 #include "ExitCode.h"
 #include "ModbusClient.h"
@@ -14,11 +16,13 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QHostInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTimer>
+#include <memory>
 #include <pwd.h>
 #include <unistd.h>
 
@@ -77,8 +81,8 @@ void jsonLine(CliContext& context, QJsonObject object)
 
 QString EolRunCommand::synopsis() const
 {
-    return QStringLiteral("run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
-                          "[--units CSV] [--value ID:NAME=VALUE]...");
+    return QStringLiteral("run RECIPE --serial S [--user NAME | --operator O] [--station NAME] "
+                          "[--db URL] [--units CSV] [--value ID:NAME=VALUE]...");
 }
 
 QString EolRunCommand::summary() const
@@ -90,7 +94,9 @@ QList<QCommandLineOption> EolRunCommand::options() const
 {
     return {
         {kSerial, tr("The unit's serial number (as its barcode reads)."), tr("S")},
-        {kOperator, tr("Who tests it (default: the login name)."), tr("NAME")},
+        {kOperator, tr("Who tests it, on a station without users (default: the login name)."),
+         tr("NAME")},
+        CliIdentity::userOption(),
         {kStation, tr("This station's name (default: the host name)."), tr("NAME")},
         {kDb, tr("Results database: an SQLite file or postgresql://user@host/db."), tr("URL")},
         {kUnits, tr("CSV file with the per-unit values, by serial number."), tr("CSV")},
@@ -201,6 +207,13 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
                    .arg(opened.waiting)
             << Qt::endl;
 
+    // On a managed station (the database has users) only a user who may test units, with a
+    // recipe whose checksum is approved; checked before anything is sent.
+    const std::optional<EolRunIdentity> identity =
+        EolRunIdentity::check(context, writer, station, *recipe, checksum, &code);
+    if (!identity)
+        return code;
+
     if (!context.connectBus())
         return context.usageError() ? ExitUsage : ExitCommunication;
 
@@ -231,7 +244,9 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     EolRun::Options options;
     options.serial = serial;
     options.station = station;
-    options.operatorName = parser.value(kOperator);
+    options.operatorName = identity->user.isEmpty() ? parser.value(kOperator) : identity->user;
+    options.approvalId = identity->approvalId;
+    options.approver = identity->approver;
     if (options.operatorName.isEmpty()) {
         const passwd* user = ::getpwuid(::geteuid());
         options.operatorName = user ? QString::fromLocal8Bit(user->pw_name) : QString();

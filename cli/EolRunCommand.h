@@ -14,7 +14,8 @@ class Recipe;
 // the results database. Progress as lines for people, or one JSON object per line (--json) for
 // a PLC or MES. Exit codes: 0 PASS, 5 FAIL, 3 recipe or unit values not valid (nothing sent),
 // 1 communication lost or results database unusable, 4 a motor not confirmed stopped,
-// 130 interrupted.
+// 130 interrupted. On a station with users: --user NAME (who may test units) and an approved
+// recipe, else 3 and nothing sent.
 class EolRunCommand : public EolSubcommand
 {
 public:
