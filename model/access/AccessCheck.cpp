@@ -101,7 +101,7 @@ AccessDecision AccessCheck::login(const Identity& who, Privilege privilege)
 
 AccessDecision AccessCheck::authorize(Privilege privilege, const Identity& who, const QString& what)
 {
-    return decide(identify(who, QStringLiteral("identify")), privilege, what);
+    return decide(identify(who, QStringLiteral("login")), privilege, what);
 }
 
 AccessDecision AccessCheck::authorizeUser(Privilege privilege, const QString& userName,

@@ -45,15 +45,18 @@ void StationAccess::refresh(const QString& checksum)
             if (checksum != m_checksum)
                 return; // a later refresh answers
             m_error = answer->error;
-            m_state = answer->managed < 0   ? State::Unknown
-                      : answer->managed > 0 ? State::Managed
-                                            : State::Unmanaged;
+            if (answer->managed < 0 || !answer->error.isEmpty()) {
+                // The database out of reach (results go to the spool meanwhile) changes no user
+                // and no approval: what was known stays.
+                emit changed();
+                return;
+            }
+            m_state = answer->managed > 0 ? State::Managed : State::Unmanaged;
             if (m_state != State::Managed)
                 m_user.reset(); // users were removed meanwhile: nobody to be logged in as
-            if (m_state != State::Unknown)
-                QSettings().setValue(QLatin1String(kManagedKey), m_state == State::Managed);
+            QSettings().setValue(QLatin1String(kManagedKey), m_state == State::Managed);
             m_approval = answer->approval;
-            m_approvalKnown = answer->managed >= 0 && answer->error.isEmpty();
+            m_approvalKnown = true;
             emit changed();
         });
 }

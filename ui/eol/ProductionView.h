@@ -16,6 +16,7 @@ namespace opentop {
 class EolSpeedChart;
 class EolStation;
 class ModbusClient;
+class StationLogin;
 class TrafficLog;
 
 // The operator screen of an end-of-line station: a large serial-number field that takes a
@@ -36,6 +37,7 @@ public:
     QLabel* databaseLabel() const { return m_database; }
     QLabel* noticeLabel() const { return m_notice; }
     QLabel* scanNoteLabel() const { return m_scanNote; }
+    StationLogin* login() const { return m_login; }
     // The station makes the recipe's drives safe on the bus the window is connected to.
     void makeSafe();
     QPushButton* cancelButton() const { return m_cancel; }
@@ -76,7 +78,7 @@ private:
     QLabel* m_database;
     QLabel* m_notice;
     QLabel* m_scanNote;
-    QLineEdit* m_operator;
+    StationLogin* m_login;
     QLineEdit* m_serial;
     QPushButton* m_cancel;
     QTableWidget* m_drives;
