@@ -16,7 +16,7 @@ namespace {
 
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("opentop::EolRunCommand", text);
+    return QCoreApplication::translate("opentop::EolRunIdentity", text);
 }
 
 } // namespace
