@@ -20,6 +20,7 @@ IdentityDialog::IdentityDialog(StationAccess* access, Privilege privilege, const
 {
     setObjectName(QStringLiteral("identityDialog"));
     setWindowTitle(tr("Who is it?"));
+    setMinimumWidth(460); // the question and a refusal wrap, never cut
     auto* intro = new QLabel(tr("To %1 this station needs the %2 role or higher. Log in with your "
                                 "user name and password.")
                                  .arg(AccessPolicy::privilegeText(privilege),

@@ -61,6 +61,8 @@ StationLogin::StationLogin(EolStation* station, QWidget* parent)
     m_who->setObjectName(QStringLiteral("loggedInUser"));
     m_logout = new QPushButton(tr("Log out"), this);
     m_pages->addWidget(row(this, {m_who, m_logout}));
+    for (QPushButton* b : {m_login, m_logout})
+        b->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_pages);
