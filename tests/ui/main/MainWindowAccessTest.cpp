@@ -6,11 +6,15 @@
 #include "MainWindowFixture.h"
 #include "access/AccessCheck.h"
 #include "access/AuditTrail.h"
+#include "access/RecipeApprovals.h"
 #include "access/StationAccess.h"
+#include "eol/EolMenu.h"
 #include "eol/EolStation.h"
 #include "eol/IdentityDialog.h"
 #include "eol/ProductionMode.h"
 #include "eol/ProductionView.h"
+#include "eol/RecipeApproveButton.h"
+#include "eol/RecipeEditor.h"
 #include "eol/RecipeFile.h"
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
@@ -19,6 +23,7 @@
 
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QTemporaryDir>
 
@@ -92,8 +97,41 @@ QString answerIdentity(MainWindow* window, const QString& user, const QString& p
     return message;
 }
 
+// Closes the next message box once it shows; its text goes to *text.
+void closeNextMessage(QString* text)
+{
+    auto* timer = new QTimer;
+    QObject::connect(timer, &QTimer::timeout, [timer, text] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            *text = box->text();
+            box->accept();
+            timer->deleteLater();
+        }
+    });
+    timer->start(20);
+}
+
 class MainWindowAccessTest : public MainWindowFixture
 {
+protected:
+    // A results database with ada (administrator), olga (operator) and erik (engineer).
+    static void addUsers(const QString& db)
+    {
+        QString error;
+        auto database = ResultDatabase::open(db, &error);
+        ASSERT_TRUE(database) << qPrintable(error);
+        AccessCheck access(*database, QStringLiteral("setup"));
+        ASSERT_TRUE(access.addUser(
+            {}, person(QStringLiteral("ada"), QStringLiteral("Ada"), Role::Administrator),
+            QStringLiteral("adm-pass"), &error));
+        const Identity ada{QStringLiteral("ada"), QStringLiteral("adm-pass")};
+        ASSERT_TRUE(access.addUser(
+            ada, person(QStringLiteral("olga"), QStringLiteral("Olga O."), Role::Operator),
+            QStringLiteral("op-pass"), &error));
+        ASSERT_TRUE(access.addUser(
+            ada, person(QStringLiteral("erik"), QStringLiteral("Erik E."), Role::Engineer),
+            QStringLiteral("eng-pass"), &error));
+    }
 };
 
 } // namespace
@@ -102,22 +140,7 @@ TEST_F(MainWindowAccessTest, AnOperatorLogsInRunsOnlyApprovedRecipesAndCannotLea
 {
     QTemporaryDir dir;
     const QString db = dir.filePath(QStringLiteral("results.db"));
-    {
-        QString error;
-        auto database = ResultDatabase::open(db, &error);
-        ASSERT_TRUE(database) << qPrintable(error);
-        AccessCheck access(*database, QStringLiteral("setup"));
-        const StationUser admin =
-            person(QStringLiteral("ada"), QStringLiteral("Ada"), Role::Administrator);
-        ASSERT_TRUE(access.addUser({}, admin, QStringLiteral("adm-pass"), &error));
-        const Identity ada{QStringLiteral("ada"), QStringLiteral("adm-pass")};
-        const StationUser olga =
-            person(QStringLiteral("olga"), QStringLiteral("Olga O."), Role::Operator);
-        ASSERT_TRUE(access.addUser(ada, olga, QStringLiteral("op-pass"), &error));
-        const StationUser erik =
-            person(QStringLiteral("erik"), QStringLiteral("Erik E."), Role::Engineer);
-        ASSERT_TRUE(access.addUser(ada, erik, QStringLiteral("eng-pass"), &error));
-    }
+    addUsers(db);
     qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
     window->production()->toggleAction()->trigger();
     qunsetenv("OPENTOP_EOL_DB");
@@ -267,4 +290,55 @@ TEST_F(MainWindowAccessTest, AStationWithoutUsersSaysSoInAmberAndWorksAsBefore)
     window->production()->toggleAction()->trigger();
     EXPECT_FALSE(window->production()->isActive());
     EXPECT_FALSE(window->findChild<IdentityDialog*>());
+}
+
+TEST_F(MainWindowAccessTest, TheRecipeEditorAndItsApproveAskForAnEngineer)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("results.db"));
+    addUsers(db);
+    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    window->production()->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    EolStation* station = window->production()->station();
+    ASSERT_TRUE(waitFor([&] { return station->access()->isManaged(); }));
+    window->production()->toggleAction()->trigger();
+    answerIdentity(window.get(), QStringLiteral("erik"), QStringLiteral("eng-pass"), true);
+    ASSERT_TRUE(waitFor([&] { return !window->production()->isActive(); }));
+
+    // The editor: an operator is refused, an engineer gets it.
+    QAction* editorAction = window->findChild<EolMenu*>()->recipeEditorAction();
+    editorAction->trigger();
+    EXPECT_TRUE(
+        answerIdentity(window.get(), QStringLiteral("olga"), QStringLiteral("op-pass"), false)
+            .contains(QStringLiteral("olga (operator) may not open or edit a recipe")));
+    EXPECT_FALSE(window->findChild<RecipeEditor*>());
+    editorAction->trigger();
+    answerIdentity(window.get(), QStringLiteral("erik"), QStringLiteral("eng-pass"), true);
+    RecipeEditor* editor = nullptr;
+    ASSERT_TRUE(waitFor([&] { return (editor = window->findChild<RecipeEditor*>()) != nullptr; }));
+    const QString path = recipeFile(dir);
+    QString error;
+    ASSERT_TRUE(editor->openFile(path, &error)) << qPrintable(error);
+
+    // Approve…: an operator is refused; an engineer approves the saved file's checksum.
+    auto* approve = editor->findChild<RecipeApproveButton*>();
+    ASSERT_TRUE(approve);
+    approve->click();
+    EXPECT_TRUE(
+        answerIdentity(window.get(), QStringLiteral("olga"), QStringLiteral("op-pass"), false)
+            .contains(QStringLiteral("olga (operator) may not approve a recipe")));
+    QString said;
+    closeNextMessage(&said);
+    approve->click();
+    answerIdentity(window.get(), QStringLiteral("erik"), QStringLiteral("eng-pass"), true);
+    ASSERT_TRUE(waitFor([&] { return !said.isEmpty(); }));
+    EXPECT_TRUE(said.contains(QStringLiteral("is approved by erik"))) << qPrintable(said);
+    QString checksum;
+    ASSERT_TRUE(RecipeFile::load(path, &error, &checksum));
+    auto database = ResultDatabase::open(db, &error);
+    ASSERT_TRUE(database) << qPrintable(error);
+    const auto approval = RecipeApprovals(*database).current(checksum, &error);
+    ASSERT_TRUE(approval) << qPrintable(error);
+    EXPECT_EQ(approval->approver, QStringLiteral("erik"));
 }
