@@ -8,7 +8,7 @@
 #include "eol/ResultWriter.h"
 
 #include <QEventLoop>
-#include <memory>
+#include <functional>
 
 namespace opentop {
 
@@ -21,71 +21,52 @@ QString tr(const char* text)
 
 } // namespace
 
+namespace {
+
+// Runs `job` on the writer's thread with its database and waits for it.
+void onWriter(ResultWriter& writer, std::function<void(ResultDatabase* db)> job)
+{
+    QEventLoop loop;
+    writer.run(&loop, std::move(job), [&loop] { loop.quit(); });
+    loop.exec();
+}
+
+} // namespace
+
 std::optional<EolRunIdentity> EolRunIdentity::check(CliContext& context, ResultWriter& writer,
                                                     const QString& station, const Recipe& recipe,
                                                     const QString& checksum, int* code)
 {
     QTextStream& err = context.err();
-    std::optional<Identity> who;
-    if (context.parser().isSet(QStringLiteral("user"))) {
-        who = CliIdentity::fromOptions(context);
-        if (!who) {
-            *code = ExitUsage;
-            return std::nullopt;
-        }
-    }
-    struct Answer
-    {
-        AccessDecision decision;
-        std::optional<RecipeApproval> approval;
-        QString error;
-    };
-    auto answer = std::make_shared<Answer>();
-    QEventLoop loop;
-    writer.run(
-        &loop,
-        [answer, who, station, checksum](ResultDatabase* db) {
-            if (!db) {
-                answer->error = tr("the results database is not open");
-                return;
-            }
-            AccessCheck access(*db, station);
-            const int managed = access.managed(&answer->error);
-            if (managed <= 0) {
-                answer->decision.allowed = managed == 0;
-                return;
-            }
-            answer->decision.managed = true;
-            if (!who) {
-                answer->decision.message = tr("this station has users: name who tests with "
-                                              "--user NAME (the password from OPENTOP_PASSWORD "
-                                              "or the terminal)");
-                return;
-            }
-            answer->decision = access.login(*who, Privilege::RunUnits);
-            if (!answer->decision.allowed)
-                return;
-            answer->approval = RecipeApprovals(*db).current(checksum, &answer->error);
-            if (!answer->approval && answer->error.isEmpty())
-                access.audit(who->name, QStringLiteral("refused"),
-                             tr("run-units: recipe checksum %1 is not approved").arg(checksum));
-        },
-        [&loop] { loop.quit(); });
-    loop.exec();
-    if (!answer->error.isEmpty()) {
-        err << tr("results database: %1; nothing was sent").arg(answer->error) << Qt::endl;
+    const bool userGiven = context.parser().isSet(QStringLiteral("user"));
+    // First whether the station has users: a password is asked only when it does.
+    int managed = -1;
+    QString error;
+    onWriter(writer, [&managed, &error, station](ResultDatabase* db) {
+        if (db)
+            managed = AccessCheck(*db, station).managed(&error);
+        else
+            error = tr("the results database is not open");
+    });
+    if (managed < 0) {
+        err << tr("results database: %1; nothing was sent").arg(error) << Qt::endl;
         *code = ExitCommunication;
         return std::nullopt;
     }
-    const AccessDecision& d = answer->decision;
-    if (!d.allowed) {
-        err << tr("refused: %1; nothing was sent").arg(d.message) << Qt::endl;
-        *code = who ? ExitInvalid : ExitUsage;
+    EolRunIdentity identity;
+    if (managed == 0) {
+        // Unmanaged: as before users existed; a --user is the operator's name, unchecked.
+        identity.user = context.parser().value(QStringLiteral("user")).trimmed();
+        return identity;
+    }
+    if (!userGiven) {
+        err << tr("refused: %1; nothing was sent")
+                   .arg(tr("this station has users: name who tests with --user NAME (the "
+                           "password from OPENTOP_PASSWORD or the terminal)"))
+            << Qt::endl;
+        *code = ExitUsage;
         return std::nullopt;
     }
-    EolRunIdentity identity;
-    if (!d.managed)
-        return identity; // unmanaged: as before users existed
     if (context.parser().isSet(QStringLiteral("operator"))) {
         err << tr("error: on a station with users the operator is the user who logs in "
                   "(--user); --operator is not taken")
@@ -93,16 +74,47 @@ std::optional<EolRunIdentity> EolRunIdentity::check(CliContext& context, ResultW
         *code = ExitUsage;
         return std::nullopt;
     }
-    if (!answer->approval) {
+    const std::optional<Identity> who = CliIdentity::fromOptions(context);
+    if (!who) {
+        *code = ExitUsage;
+        return std::nullopt;
+    }
+    AccessDecision decision;
+    std::optional<RecipeApproval> approval;
+    onWriter(writer, [&, station, checksum](ResultDatabase* db) {
+        if (!db) {
+            error = tr("the results database is not open");
+            return;
+        }
+        AccessCheck access(*db, station);
+        decision = access.login(*who, Privilege::RunUnits);
+        if (!decision.allowed)
+            return;
+        approval = RecipeApprovals(*db).current(checksum, &error);
+        if (!approval && error.isEmpty())
+            access.audit(who->name, QStringLiteral("refused"),
+                         tr("run-units: recipe checksum %1 is not approved").arg(checksum));
+    });
+    if (!error.isEmpty()) {
+        err << tr("results database: %1; nothing was sent").arg(error) << Qt::endl;
+        *code = ExitCommunication;
+        return std::nullopt;
+    }
+    if (!decision.allowed) {
+        err << tr("refused: %1; nothing was sent").arg(decision.message) << Qt::endl;
+        *code = ExitInvalid;
+        return std::nullopt;
+    }
+    if (!approval) {
         err << tr("refused: %1 Nothing was sent.")
                    .arg(RecipeApprovals::draftText(recipe.product, recipe.revision))
             << Qt::endl;
         *code = ExitInvalid;
         return std::nullopt;
     }
-    identity.user = d.user->name;
-    identity.approvalId = answer->approval->id;
-    identity.approver = answer->approval->approver;
+    identity.user = decision.user->name;
+    identity.approvalId = approval->id;
+    identity.approver = approval->approver;
     err << tr("%1 logged in; recipe approved by %2 (approval %3)")
                .arg(identity.user, identity.approver, identity.approvalId)
         << Qt::endl;

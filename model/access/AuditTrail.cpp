@@ -53,8 +53,9 @@ std::optional<QVector<AuditEntry>> AuditTrail::query(const AuditFilter& f, QStri
         values << f.station;
     }
     QSqlQuery q(database_.db());
+    // The newest `limit` entries, returned oldest first.
     q.prepare(QStringLiteral("SELECT at_s, station, user_name, action, detail FROM audit%1"
-                             " ORDER BY at_s, audit_id LIMIT %2")
+                             " ORDER BY at_s DESC, audit_id DESC LIMIT %2")
                   .arg(where.isEmpty()
                            ? QString()
                            : QStringLiteral(" WHERE ") + where.join(QStringLiteral(" AND ")))
@@ -75,7 +76,7 @@ std::optional<QVector<AuditEntry>> AuditTrail::query(const AuditFilter& f, QStri
         e.user = q.value(2).toString();
         e.action = q.value(3).toString();
         e.detail = q.value(4).toString();
-        entries << e;
+        entries.prepend(e);
     }
     return entries;
 }

@@ -23,7 +23,7 @@ struct AuditFilter
     QDateTime since; // invalid: from the start
     QString user;
     QString station;
-    int limit = 10000;
+    int limit = 10000; // the newest this many
 };
 
 // The audit trail of the results database (schema version 6): who did what, when and at which

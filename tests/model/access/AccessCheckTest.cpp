@@ -13,6 +13,7 @@
 
 #include <QSqlQuery>
 #include <QTemporaryDir>
+#include <QThread>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -286,4 +287,39 @@ TEST(AccessCheckTest, ADatabaseAtVersionThreeGainsUsersAndKeepsItsUnits)
     ASSERT_TRUE(loaded) << error.toStdString();
     EXPECT_TRUE(loaded->approver.isEmpty()) << "a unit from before approvals names none";
     EXPECT_EQ(AccessCheck(*db, QStringLiteral("s")).managed(&error), 0);
+}
+
+TEST(AuditTrailTest, ALimitKeepsTheNewestEntriesOldestFirstAndFilters)
+{
+    QTemporaryDir dir;
+    QString error;
+    auto db = ResultDatabase::open(dir.filePath(QStringLiteral("r.db")), &error);
+    ASSERT_TRUE(db) << error.toStdString();
+    AuditTrail trail(*db);
+    for (int i = 0; i < 5; ++i) {
+        ASSERT_TRUE(trail.record(i % 2 ? QStringLiteral("st-2") : QStringLiteral("st-1"),
+                                 QStringLiteral("u%1").arg(i), QStringLiteral("login"),
+                                 QString::number(i), &error))
+            << error.toStdString();
+        QThread::msleep(3); // the database clock orders them
+    }
+    AuditFilter newest;
+    newest.limit = 2;
+    auto entries = trail.query(newest, &error);
+    ASSERT_TRUE(entries) << error.toStdString();
+    ASSERT_EQ(entries->size(), 2);
+    EXPECT_EQ(entries->at(0).detail, QStringLiteral("3"));
+    EXPECT_EQ(entries->at(1).detail, QStringLiteral("4"));
+    EXPECT_LE(entries->at(0).time, entries->at(1).time);
+    AuditFilter station;
+    station.station = QStringLiteral("st-2");
+    entries = trail.query(station, &error);
+    ASSERT_TRUE(entries);
+    ASSERT_EQ(entries->size(), 2);
+    EXPECT_EQ(entries->at(0).user, QStringLiteral("u1"));
+    AuditFilter later;
+    later.since = QDateTime::currentDateTimeUtc().addSecs(60);
+    entries = trail.query(later, &error);
+    ASSERT_TRUE(entries);
+    EXPECT_TRUE(entries->isEmpty());
 }
