@@ -26,6 +26,7 @@ QWidget* row(QWidget* parent, std::initializer_list<QWidget*> widgets)
     auto* page = new QWidget(parent);
     auto* layout = new QHBoxLayout(page);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->addStretch(1); // the label beside its field, at the right of the top row
     for (QWidget* w : widgets)
         layout->addWidget(w);
     return page;
