@@ -77,8 +77,13 @@ QString answerIdentity(MainWindow* window, const QString& user, const QString& p
                        bool expectClosed)
 {
     IdentityDialog* dialog = nullptr;
-    EXPECT_TRUE(
-        waitFor([&] { return (dialog = window->findChild<IdentityDialog*>()) != nullptr; }));
+    // The one showing now (an earlier one, closed, may not be deleted yet).
+    EXPECT_TRUE(waitFor([&] {
+        for (IdentityDialog* d : window->findChildren<IdentityDialog*>())
+            if (d->isVisible())
+                dialog = d;
+        return dialog != nullptr;
+    }));
     if (!dialog)
         return QString();
     QPointer<IdentityDialog> alive(dialog);
