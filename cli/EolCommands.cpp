@@ -1,12 +1,15 @@
 #include "CliCommands.h"
+#include "EolAuditCommand.h"
 #include "EolCertificateCommand.h"
 #include "EolCommand.h"
+#include "EolRecipeApproveCommand.h"
 #include "EolRecipeCheckCommand.h"
 #include "EolRecipeCreateCommand.h"
 #include "EolRecipeShowCommand.h"
 #include "EolRecipeSignCommand.h"
 #include "EolResultsCommand.h"
 #include "EolRunCommand.h"
+#include "EolUserCommand.h"
 
 namespace opentop {
 
@@ -20,6 +23,12 @@ void addEolCommands(CliCommandList& list)
     eol->add(std::make_unique<EolRecipeShowCommand>());
     eol->add(std::make_unique<EolResultsCommand>());
     eol->add(std::make_unique<EolCertificateCommand>());
+    eol->add(std::make_unique<EolRecipeApproveCommand>());
+    eol->add(std::make_unique<EolUserCommand>(EolUserCommand::Action::Add));
+    eol->add(std::make_unique<EolUserCommand>(EolUserCommand::Action::List));
+    eol->add(std::make_unique<EolUserCommand>(EolUserCommand::Action::Disable));
+    eol->add(std::make_unique<EolUserCommand>(EolUserCommand::Action::Passwd));
+    eol->add(std::make_unique<EolAuditCommand>());
     list.push_back(std::move(eol));
 }
 

@@ -195,8 +195,8 @@ void EolResultsCommand::printUnits(CliContext& context, const QVector<UnitRecord
         out << tr("no unit matches") << Qt::endl;
         return;
     }
-    TextTable table({tr("started"), tr("serial"), tr("recipe"), tr("station"), tr("operator"),
-                     tr("drives"), tr("verdict"), tr("time"), tr("reason")});
+    TextTable table({tr("started"), tr("serial"), tr("recipe"), tr("approved by"), tr("station"),
+                     tr("operator"), tr("drives"), tr("verdict"), tr("time"), tr("reason")});
     for (const UnitRecord& u : units) {
         const QString seconds =
             u.ended.isValid()
@@ -207,7 +207,7 @@ void EolResultsCommand::printUnits(CliContext& context, const QVector<UnitRecord
         for (const UnitDrive& d : u.drives)
             drives << tr("%1: %2").arg(d.machineNumber).arg(CertificateHtml::variantText(d));
         table.addRow({localTime(u.started), u.serial,
-                      tr("%1 rev. %2").arg(u.recipeName, u.recipeRevision), u.station,
+                      tr("%1 rev. %2").arg(u.recipeName, u.recipeRevision), u.approver, u.station,
                       u.operatorName, drives.join(QStringLiteral("; ")),
                       CertificateHtml::verdictText(u.status), seconds,
                       u.isPass() ? QString() : YieldReport::reasonOf(u)});

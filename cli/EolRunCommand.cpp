@@ -1,6 +1,8 @@
 #include "EolRunCommand.h"
 
 #include "CliContext.h"
+#include "CliIdentity.h"
+#include "EolRunIdentity.h"
 #include "EolSupport.h"
 #include "ExitCode.h"
 #include "ModbusClient.h"
@@ -16,11 +18,13 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QHostInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTimer>
+#include <memory>
 #include <pwd.h>
 #include <unistd.h>
 
@@ -81,7 +85,7 @@ void jsonLine(CliContext& context, QJsonObject object)
 QString EolRunCommand::synopsis() const
 {
     return QStringLiteral(
-        "run RECIPE --serial S [--operator O] [--station NAME] [--db URL] "
+        "run RECIPE --serial S [--user NAME | --operator O] [--station NAME] [--db URL] "
         "[--units CSV] [--value ID:NAME=VALUE]... [--variant VARIANT|ID=VARIANT,...] [--retest]");
 }
 
@@ -94,7 +98,9 @@ QList<QCommandLineOption> EolRunCommand::options() const
 {
     return {
         {kSerial, tr("The unit's serial number (as its barcode reads)."), tr("S")},
-        {kOperator, tr("Who tests it (default: the login name)."), tr("NAME")},
+        {kOperator, tr("Who tests it, on a station without users (default: the login name)."),
+         tr("NAME")},
+        CliIdentity::userOption(),
         {kStation, tr("This station's name (default: the host name)."), tr("NAME")},
         {kDb, tr("Results database: an SQLite file or postgresql://user@host/db."), tr("URL")},
         {kUnits, tr("CSV file with the per-unit values, by serial number."), tr("CSV")},
@@ -248,6 +254,13 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
                    .arg(opened.waiting)
             << Qt::endl;
 
+    // On a managed station (the database has users) only a user who may test units, with a
+    // recipe whose checksum is approved; checked before anything is sent.
+    const std::optional<EolRunIdentity> identity =
+        EolRunIdentity::check(context, writer, station, *recipe, checksum, &code);
+    if (!identity)
+        return code;
+
     // The recipe's retest rules, on the serial's recorded verdicts, before anything is sent.
     RetestPolicy::Decision decision;
     {
@@ -302,7 +315,9 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     EolRun::Options options;
     options.serial = serial;
     options.station = station;
-    options.operatorName = parser.value(kOperator);
+    options.operatorName = identity->user.isEmpty() ? parser.value(kOperator) : identity->user;
+    options.approvalId = identity->approvalId;
+    options.approver = identity->approver;
     if (options.operatorName.isEmpty()) {
         const passwd* user = ::getpwuid(::geteuid());
         options.operatorName = user ? QString::fromLocal8Bit(user->pw_name) : QString();

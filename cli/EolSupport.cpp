@@ -139,7 +139,8 @@ QString EolSupport::defaultDatabase()
     return ResultUrl::defaultLocation();
 }
 
-std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, int* exitCode)
+std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, int* exitCode,
+                                                         bool create)
 {
     const QString option = QStringLiteral("db");
     QString text = context.parser().value(option);
@@ -159,7 +160,9 @@ std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, in
         *exitCode = ExitUsage;
         return nullptr;
     }
-    if (url->engine == ResultUrl::Engine::Sqlite && !QFileInfo::exists(url->path)) {
+    if (create && url->engine == ResultUrl::Engine::Sqlite)
+        QDir().mkpath(QFileInfo(url->path).absolutePath());
+    else if (url->engine == ResultUrl::Engine::Sqlite && !QFileInfo::exists(url->path)) {
         // Reading never makes a database: a wrong path would otherwise show an empty one.
         context.err() << tr("error: no results database at %1 (nothing recorded there yet); "
                             "name one with --db URL")

@@ -48,7 +48,9 @@ public:
     // The results database: --db URL, else OPENTOP_EOL_DB, else defaultDatabase(). Prints
     // why it cannot be opened (the URL without its password) and sets *exitCode (2 for a
     // wrong URL or a SQLite file that does not exist, 1 for one that cannot be opened).
-    static std::unique_ptr<ResultDatabase> openDatabase(CliContext& context, int* exitCode);
+    // `create`: a missing SQLite file is made (the first user of a new station).
+    static std::unique_ptr<ResultDatabase> openDatabase(CliContext& context, int* exitCode,
+                                                        bool create = false);
     // -o FILE, which several subcommands take.
     static QCommandLineOption outputOption();
     // $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).

@@ -474,6 +474,176 @@
     </message>
 </context>
 <context>
+    <name>opentop::AccessCheck</name>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="27"/>
+        <source>%1 (%2) may not %3: it needs the %4 role or higher</source>
+        <translation>%1 (%2) は%3ことができません: %4 以上のロールが必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="39"/>
+        <location filename="../model/access/AccessCheck.cpp" line="49"/>
+        <location filename="../model/access/AccessCheck.cpp" line="122"/>
+        <source>the users cannot be read from the results database: %1</source>
+        <translation>結果データベースからユーザーを読み込めません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="54"/>
+        <source>wrong user name or password</source>
+        <translation>ユーザー名またはパスワードが違います</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="56"/>
+        <source>user &quot;%1&quot;: wrong user name or password</source>
+        <translation>ユーザー &quot;%1&quot;: ユーザー名またはパスワードが違います</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="60"/>
+        <source>user %1 is disabled</source>
+        <translation>ユーザー %1 は無効です</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="98"/>
+        <source>logged in as %1</source>
+        <translation>%1 としてログイン</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="123"/>
+        <source>user %1 is not an active user</source>
+        <translation>ユーザー %1 は有効なユーザーではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="136"/>
+        <source>recipe %1 rev. %2, checksum %3</source>
+        <translation>レシピ %1 rev. %2、チェックサム %3</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="142"/>
+        <source>this station has no users yet: an approval names its approver, so add users first (opentop-cli eol user add)</source>
+        <translation>このステーションにはまだユーザーがいません: 承認には承認者が記録されるため、先にユーザーを追加してください (opentop-cli eol user add)</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="151"/>
+        <source>the approval was not recorded: %1</source>
+        <translation>承認は記録されませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="155"/>
+        <source>%1; approval %2</source>
+        <translation>%1; 承認 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="184"/>
+        <source>the first user must be an administrator (--role administrator): they add everyone else</source>
+        <translation>最初のユーザーは管理者でなければなりません (--role administrator): 他の全員は管理者が追加します</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="189"/>
+        <source>add user %1</source>
+        <translation>ユーザー %1 の追加</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="196"/>
+        <source>user %1 exists already</source>
+        <translation>ユーザー %1 はすでに存在します</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="202"/>
+        <source>user %1 (%2) added as %3</source>
+        <translation>ユーザー %1 (%2) を %3 として追加しました</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>enable user %1</source>
+        <translation>ユーザー %1 の有効化</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>disable user %1</source>
+        <translation>ユーザー %1 の無効化</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="216"/>
+        <location filename="../model/access/AccessCheck.cpp" line="256"/>
+        <source>there are no users yet</source>
+        <translation>ユーザーはまだいません</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="223"/>
+        <location filename="../model/access/AccessCheck.cpp" line="262"/>
+        <source>no user %1</source>
+        <translation>ユーザー %1 はいません</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="228"/>
+        <source>%1 is the last active administrator: add another first</source>
+        <translation>%1 は最後の有効な管理者です: 先に別の管理者を追加してください</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="254"/>
+        <source>set the password of %1</source>
+        <translation>%1 のパスワード設定</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AccessPolicy</name>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="76"/>
+        <source>operator</source>
+        <translation>作業者</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="78"/>
+        <source>technician</source>
+        <translation>技術者</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="80"/>
+        <source>engineer</source>
+        <translation>エンジニア</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="84"/>
+        <source>administrator</source>
+        <translation>管理者</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="96"/>
+        <source>test units</source>
+        <translation>製品を検査する</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="98"/>
+        <source>reset an alarm and retry</source>
+        <translation>アラームをリセットして再試行する</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="100"/>
+        <source>override a retest limit</source>
+        <translation>再検査回数の上限を解除する</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="102"/>
+        <source>leave production mode</source>
+        <translation>生産モードを終了する</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="104"/>
+        <source>open or edit a recipe</source>
+        <translation>レシピを開く・編集する</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="106"/>
+        <source>approve a recipe</source>
+        <translation>レシピを承認する</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="110"/>
+        <source>manage users</source>
+        <translation>ユーザーを管理する</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AddressSwitches</name>
     <message>
         <location filename="../model/profile/AddressSwitches.cpp" line="66"/>
@@ -2391,7 +2561,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
@@ -2432,7 +2602,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
@@ -2448,234 +2618,249 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <source>Recipe approved by</source>
+        <translation>レシピ承認者</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <source>not approved (station without users)</source>
+        <translation>未承認 (ユーザーのいないステーション)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <source>%1 (approval %2)</source>
+        <translation>%1 (承認 %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Attempt</source>
         <translation>試験回数</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>%1 回目（このレシピでのこのシリアルの試験）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>カウントなし（試験回数の記録開始前の記録）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
         <source>Ended</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>Record</source>
         <translation>記録</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="96"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>First failure:</source>
         <translation>最初の不合格:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>このシリアルは過去の試験で %n 回不合格になっています。以下に一覧を示します。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
         <source>Drives</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Variant</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>How known</source>
         <translation>確認方法</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Read back</source>
         <translation>読み戻し</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Verified</source>
         <translation>照合</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>already set</source>
         <translation>設定済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>NO</source>
         <translation>いいえ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
         <source>Measurements</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Step</source>
         <translation>ステップ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Quantity</source>
         <translation>測定項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Limits</source>
         <translation>規格値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
         <source>Earlier tests of this serial</source>
         <translation>このシリアルの過去の試験</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="154"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後のバス通信</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="169"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
         <source>read from the drive</source>
         <translation>ドライバから読出し</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="171"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
         <source>proven by the variant probe</source>
         <translation>機種判定で確認済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="173"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>confirmed by a person</source>
         <translation>担当者が確認</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="175"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>ASSUMED, not proven</source>
         <translation>推定（未確認）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="179"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="185"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
         <source>not known</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="187"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
         <source>%1 (assumed)</source>
         <translation>%1（推定）</translation>
     </message>
@@ -2832,6 +3017,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../cli/CliContext.cpp" line="326"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CliIdentity</name>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
+        <translation>実行する人 (結果データベースのユーザー)。パスワードは OPENTOP_PASSWORD から取るか、端末で尋ねます。</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <source>NAME</source>
+        <translation>名前</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <source>error: no password: set %1 or run on a terminal</source>
+        <translation>エラー: パスワードがありません: %1 を設定するか端末で実行してください</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <source>Again: </source>
+        <translation>もう一度: </translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <source>error: the passwords differ; nothing was changed</source>
+        <translation>エラー: パスワードが一致しません。何も変更していません</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <source>error: name who does it with --user NAME</source>
+        <translation>エラー: --user NAME で実行する人を指定してください</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <source>Password for %1: </source>
+        <translation>%1 のパスワード: </translation>
     </message>
 </context>
 <context>
@@ -4783,6 +5006,95 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::EolAuditCommand</name>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
+        <translation>監査証跡を表示: 誰がログイン・承認し、権限を使用または拒否されたか</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
+        <translation>audit: T 以降 (2026-11-24、8h、2d、today)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <source>audit: only this user.</source>
+        <translation>audit: このユーザーのみ。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>NAME</source>
+        <translation>名前</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>audit: only this station.</source>
+        <translation>audit: このステーションのみ。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>使い方: opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <source>error: --since: %1</source>
+        <translation>エラー: --since: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <source>error: %1</source>
+        <translation>エラー: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <source>no audit entry matches</source>
+        <translation>該当する監査記録はありません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>time</source>
+        <translation>時刻</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>station</source>
+        <translation>ステーション</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>user</source>
+        <translation>ユーザー</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>action</source>
+        <translation>操作</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>detail</source>
+        <translation>内容</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolCertificateCommand</name>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
@@ -5028,14 +5340,57 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
         <source>&amp;Recipe editor…</source>
         <translation>レシピエディタ(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <source>the recipe editor</source>
+        <translation>レシピエディタ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
         <source>Re&amp;sults…</source>
         <translation>結果(&amp;S)…</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRecipeApproveCommand</name>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
+        <translation>署名済みレシピをライン用に承認 (エンジニア): 以後ステーションで実行できます</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>使い方: opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <source>%1: the recipe is not valid, so it cannot be approved:</source>
+        <translation>%1: レシピが無効なため承認できません:</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <source>error: %1; the recipe was not approved</source>
+        <translation>エラー: %1。レシピは承認されていません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
+        <translation>%1 rev. %2 を %3 が承認しました (承認 %4、チェックサム %5)</translation>
     </message>
 </context>
 <context>
@@ -5636,6 +5991,11 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
     <message>
         <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <source>approved by</source>
+        <translation>承認者</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
@@ -5780,58 +6140,58 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="57"/>
+        <location filename="../model/eol/EolRun.cpp" line="59"/>
         <source>recording the unit before anything is sent</source>
         <translation>送信前に製品を記録しています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="63"/>
+        <location filename="../model/eol/EolRun.cpp" line="65"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果データベースに製品を記録できません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="96"/>
+        <location filename="../model/eol/EolRun.cpp" line="98"/>
         <source>the recipe has no drives</source>
         <translation>レシピにドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="111"/>
         <source>the recipe is not valid: %1</source>
         <translation>レシピが無効です: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="114"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: この製品の %2 の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="132"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>cancelled by the operator</source>
         <translation>作業者によるキャンセル</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="145"/>
         <source>the connection was lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="151"/>
-        <location filename="../model/eol/EolRun.cpp" line="159"/>
+        <location filename="../model/eol/EolRun.cpp" line="153"/>
+        <location filename="../model/eol/EolRun.cpp" line="161"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="156"/>
+        <location filename="../model/eol/EolRun.cpp" line="158"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="196"/>
+        <location filename="../model/eol/EolRun.cpp" line="198"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="205"/>
+        <location filename="../model/eol/EolRun.cpp" line="207"/>
         <source>recording the result</source>
         <translation>結果を記録しています</translation>
     </message>
@@ -5839,196 +6199,242 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="90"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <source>Who tests it (default: the login name).</source>
-        <translation>試験者（既定: ログイン名）。</translation>
+        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <source>Who tests it, on a station without users (default: the login name).</source>
+        <translation>ユーザーのいないステーションで検査する人 (既定: ログイン名)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="107"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>レシピの規則で止められる再試験（合格済みのシリアル、または試験回数を使い切ったもの）を技術者が許可します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="144"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="143"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="166"/>
+        <location filename="../cli/EolRunCommand.cpp" line="172"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2 が許可するのは %3。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="168"/>
+        <location filename="../cli/EolRunCommand.cpp" line="174"/>
         <source>any %1 variant</source>
         <translation>%1 の全機種</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="177"/>
+        <location filename="../cli/EolRunCommand.cpp" line="183"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: レシピに局番 %2 の位置がない。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="191"/>
+        <location filename="../cli/EolRunCommand.cpp" line="197"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="206"/>
+        <location filename="../cli/EolRunCommand.cpp" line="212"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="237"/>
+        <location filename="../cli/EolRunCommand.cpp" line="243"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="241"/>
+        <location filename="../cli/EolRunCommand.cpp" line="247"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="246"/>
+        <location filename="../cli/EolRunCommand.cpp" line="252"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="265"/>
+        <location filename="../cli/EolRunCommand.cpp" line="278"/>
         <source>error: %1; nothing was sent</source>
         <translation>エラー: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="267"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>a technician allows it with --retest</source>
         <translation>技術者は --retest で許可できます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="271"/>
+        <location filename="../cli/EolRunCommand.cpp" line="284"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注: %1。--retest の許可により再試験します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="292"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>station: %1</source>
         <translation>ステーション: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="296"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="334"/>
-        <location filename="../cli/EolRunCommand.cpp" line="355"/>
+        <location filename="../cli/EolRunCommand.cpp" line="349"/>
+        <location filename="../cli/EolRunCommand.cpp" line="370"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="378"/>
+        <location filename="../cli/EolRunCommand.cpp" line="393"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="409"/>
+        <location filename="../cli/EolRunCommand.cpp" line="424"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="411"/>
+        <location filename="../cli/EolRunCommand.cpp" line="426"/>
         <source>attempt %1</source>
         <translation>%1 回目の試験</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="418"/>
+        <location filename="../cli/EolRunCommand.cpp" line="433"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="420"/>
+        <location filename="../cli/EolRunCommand.cpp" line="435"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
+        <location filename="../cli/EolRunCommand.cpp" line="440"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRunIdentity</name>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <source>the results database is not open</source>
+        <translation>結果データベースが開いていません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <source>results database: %1; nothing was sent</source>
+        <translation>結果データベース: %1。何も送信していません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <source>refused: %1; nothing was sent</source>
+        <translation>拒否: %1。何も送信していません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
+        <translation>このステーションにはユーザーがいます: --user NAME で検査する人を指定してください (パスワードは OPENTOP_PASSWORD または端末から)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
+        <translation>エラー: ユーザーのいるステーションでは、作業者はログインしたユーザー (--user) です。--operator は受け付けません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <source>run-units: recipe checksum %1 is not approved</source>
+        <translation>run-units: レシピのチェックサム %1 は承認されていません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <source>refused: %1 Nothing was sent.</source>
+        <translation>拒否: %1 何も送信していません。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <source>%1 logged in; recipe approved by %2 (approval %3)</source>
+        <translation>%1 がログイン。レシピ承認者 %2 (承認 %3)</translation>
     </message>
 </context>
 <context>
@@ -6058,83 +6464,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="170"/>
+        <location filename="../model/eol/EolStation.cpp" line="180"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="177"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="169"/>
+        <location filename="../model/eol/EolStation.cpp" line="179"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>接続できません（%1）。自動で再試行中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="178"/>
+        <location filename="../model/eol/EolStation.cpp" line="188"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="182"/>
+        <location filename="../model/eol/EolStation.cpp" line="192"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="187"/>
+        <location filename="../model/eol/EolStation.cpp" line="197"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="206"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="198"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="218"/>
+        <source>run-units: serial %1: %2</source>
+        <translation>run-units: シリアル番号 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="222"/>
+        <location filename="../model/eol/EolStation.cpp" line="270"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="212"/>
+        <location filename="../model/eol/EolStation.cpp" line="230"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="230"/>
+        <location filename="../model/eol/EolStation.cpp" line="252"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <location filename="../model/eol/EolStation.cpp" line="272"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>ステーションのドライブが安全ではありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="313"/>
+        <location filename="../model/eol/EolStation.cpp" line="306"/>
+        <source>serial %1 tested again, allowed by %2: %3</source>
+        <translation>シリアル %1 を再試験、%2 が許可:%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="342"/>
         <source>no unit was started yet</source>
         <translation>まだ試験を開始した製品がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="325"/>
+        <location filename="../model/eol/EolStation.cpp" line="354"/>
         <source>cancelled before it started</source>
         <translation>開始前に取り消されました</translation>
     </message>
@@ -6339,13 +6755,13 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="38"/>
-        <location filename="../cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="159"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="65"/>
-        <location filename="../cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="176"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -6403,7 +6819,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="167"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>エラー: %1 に結果データベースがありません（まだ何も記録されていません）。--db URL で指定してください</translation>
     </message>
@@ -6430,6 +6846,146 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1 はこの製品の範囲 %2–%3 %4 外です</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolUserCommand</name>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
+        <translation>ユーザーを追加 (作業者、技術者、エンジニア、管理者)。最初のユーザーは管理者で、--user は不要です</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <source>List the users of the results database</source>
+        <translation>結果データベースのユーザー一覧</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <source>Disable a user: they can no longer log in; their records stay</source>
+        <translation>ユーザーを無効化: ログインできなくなります。記録は残ります</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
+        <translation>ユーザーのパスワードを設定 (自分のものは旧パスワードで、管理者は誰のものでも)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <source>user add: operator, technician, engineer or administrator.</source>
+        <translation>user add: operator、technician、engineer、administrator のいずれか。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <source>ROLE</source>
+        <translation>ロール</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <source>user add: the name shown on the screen.</source>
+        <translation>user add: 画面に表示する名前。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <source>TEXT</source>
+        <translation>テキスト</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="108"/>
+        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <source>error: %1</source>
+        <translation>エラー: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
+        <translation>ユーザーなし: このステーションは管理されていません (誰でも実行・編集・終了できます)。最初の管理者の追加: opentop-cli eol user add NAME --role administrator</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>user</source>
+        <translation>ユーザー</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>name</source>
+        <translation>名前</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>role</source>
+        <translation>ロール</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>active</source>
+        <translation>有効</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>created</source>
+        <translation>作成日時</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>yes</source>
+        <translation>はい</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>no (disabled)</source>
+        <translation>いいえ (無効)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>使い方: opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <source>error: --role is one of: %1</source>
+        <translation>エラー: --role は次のいずれかです: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <source>Present password for %1: </source>
+        <translation>%1 の現在のパスワード: </translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="191"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <source>New password for %1: </source>
+        <translation>%1 の新しいパスワード: </translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <source>user %1 added as %2</source>
+        <translation>ユーザー %1 を %2 として追加しました</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <source>user %1 disabled</source>
+        <translation>ユーザー %1 を無効にしました</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <source>password of %1 changed</source>
+        <translation>%1 のパスワードを変更しました</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <source>error: %1; nothing was changed</source>
+        <translation>エラー: %1。何も変更していません</translation>
     </message>
 </context>
 <context>
@@ -7376,6 +7932,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::IdentityDialog</name>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <source>Who is it?</source>
+        <translation>どなたですか?</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
+        <translation>%1には、このステーションでは %2 以上のロールが必要です。ユーザー名とパスワードでログインしてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <source>User name:</source>
+        <translation>ユーザー名:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <source>Password:</source>
+        <translation>パスワード:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <source>Refused: %1</source>
+        <translation>拒否: %1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::InputFile</name>
     <message>
         <location filename="../model/files/InputFile.cpp" line="13"/>
@@ -7931,28 +8515,28 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="140"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="163"/>
+        <location filename="../ui/main/MainWindow.cpp" line="164"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1 に接続中…（%2 には接続したまま）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="202"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>接続済み: %1（新しい接続は失敗しました: %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
-        <location filename="../ui/main/MainWindow.cpp" line="219"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="220"/>
         <source>Cannot connect</source>
         <translation>接続できません</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7961,76 +8545,76 @@ Still connected to %2; nothing was changed.</source>
 %2 に接続したままです。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="209"/>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="210"/>
+        <location filename="../ui/main/MainWindow.cpp" line="342"/>
         <source>Not connected: %1</source>
         <translation>未接続: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="280"/>
+        <location filename="../ui/main/MainWindow.cpp" line="281"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信グループ: %1（バス › 通信グループ）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="311"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="314"/>
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — シミュレーションバス（ハードウェアなし）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="321"/>
         <source>Connecting to %1…</source>
         <translation>%1 に接続中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="347"/>
+        <location filename="../ui/main/MainWindow.cpp" line="348"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="375"/>
+        <location filename="../ui/main/MainWindow.cpp" line="376"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="412"/>
+        <location filename="../ui/main/MainWindow.cpp" line="413"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
-        <location filename="../ui/main/MainWindow.cpp" line="453"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="454"/>
         <source>quit</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>Unwritten changes</source>
         <translation>未書込みの変更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
+        <location filename="../ui/main/MainWindow.cpp" line="441"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
@@ -9404,6 +9988,14 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::PasswordHash</name>
+    <message>
+        <location filename="../model/access/PasswordHash.cpp" line="52"/>
+        <source>a password needs at least %1 characters</source>
+        <translation>パスワードは %1 文字以上必要です</translation>
+    </message>
+</context>
+<context>
     <name>opentop::PidGains</name>
     <message>
         <location filename="../model/tuning/PidGains.cpp" line="9"/>
@@ -9465,32 +10057,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生産モード（出荷検査）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>出荷検査ステーションの作業者画面。元に戻すまでパラメータは編集できません (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
         <source>&amp;Full screen</source>
         <translation>全画面表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
         <source>&amp;Station name…</source>
         <translation>ステーション名(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>この出荷検査ステーションが各ユニットに記録する名前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9499,53 +10091,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 結果を記録できるようになるまで、製品は試験できません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
         <source>Station name</source>
         <translation>ステーション名</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>このステーションが各ユニットに記録する名前（ラインの各ステーションにそれぞれ別の名前が必要です）:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
         <source>A station needs a name.</source>
         <translation>ステーションには名前が必要です。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>ユニットを検査中です。完了してから名前を変更してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
         <source>Production mode</source>
         <translation>生産モード</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>製品を試験中です。エンジニアリングモードに戻る前に、キャンセル (Esc) するか試験の終了を待ってください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
         <source>Results database</source>
         <translation>結果データベース</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <source>leave production mode</source>
+        <translation>生産モードを終了する</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
         <source>A unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="151"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>製品 %1 を試験中です。キャンセルして「%2」を実行しますか？ 先にモータを停止し、製品は中止として記録します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
         <source>cancelled to %1</source>
         <translation>「%1」のためキャンセル</translation>
     </message>
@@ -9618,77 +10215,67 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="65"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
-        <source>operator</source>
-        <translation>作業者</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Operator:</source>
-        <translation>作業者:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="97"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="89"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="189"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>READY</source>
         <translation>準備完了</translation>
     </message>
@@ -9707,210 +10294,215 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
+        <source>open another recipe</source>
+        <translation>別のレシピを開く</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="257"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="269"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="274"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>another</source>
         <translation>別のユニット</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="324"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="344"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="490"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="495"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="177"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="356"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="343"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>TESTING</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
         <source>Unit %1 — attempt %2</source>
         <translation>製品 %1 — %2 回目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="392"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="405"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1、未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（このステーションに保管）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="419"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="424"/>
         <source>NOT RECORDED</source>
         <translation>未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="446"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
         <source>STATION ERROR</source>
         <translation>ステーションエラー</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="464"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="469"/>
         <source>%1
 Not a verdict on the unit: fix the cause and test it again.</source>
         <translation>%1
 製品の判定ではありません。原因を取り除いてから再試験してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="477"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="482"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="486"/>
         <source>it does not answer</source>
         <translation>データベースが応答しません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="484"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="489"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="385"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="455"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="390"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="447"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="460"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="454"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="459"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="467"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="398"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="394"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10223,6 +10815,64 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RecipeApprovals</name>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
+        <translation>レシピ &quot;%1&quot; rev. %2 は下書きです: この版 (チェックサム) は承認されていないため実行されません。エンジニアが承認します (レシピエディタの「承認…」、または opentop-cli eol recipe approve FILE --user NAME)。</translation>
+    </message>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <source>a recipe without a checksum cannot be approved: sign it first</source>
+        <translation>チェックサムのないレシピは承認できません: 先に署名してください</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeApproveButton</name>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <source>Approve…</source>
+        <translation>承認…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
+        <translation>保存したレシピをライン用に承認 (エンジニア): ユーザーのいるステーションは承認済みレシピだけを実行します</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <source>Approve recipe</source>
+        <translation>レシピの承認</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
+        <translation>先にレシピを保存してください: 承認されるのは保存したファイルのチェックサムです。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <source>%1 cannot be approved: %2</source>
+        <translation>%1 は承認できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
+        <translation>このステーションにはユーザーがいません: 承認には承認者が記録されます。opentop-cli eol user add でユーザーを設定してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <source>approve %1 rev. %2</source>
+        <translation>%1 rev. %2 の承認</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <source>%1 rev. %2 is approved by %3: stations run it.</source>
+        <translation>%1 rev. %2 は %3 が承認しました: ステーションで実行されます。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeBuilder</name>
     <message>
         <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
@@ -10420,7 +11070,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>Revision:</source>
         <translation>リビジョン:</translation>
     </message>
@@ -10465,167 +11115,167 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>名前を付けて保存…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>マスター品のバス上のドライバまたはバックアップファイルからレシピを作成するか、既存のレシピを開いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>レシピが空です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>レシピはチェックに合格しました: 保存して実行できます。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 件の問題: 修正するまでレシピを保存できません。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>レシピがチェックに合格しません（%n 件の問題）。何も保存していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 は OpenTOP のレシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1 を開きましたが、そのままでは読み込めません (%2)。保存時にチェックし、再度署名します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="323"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1 から新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>局番 %1 はバス上の既知のドライバではありません。先にバスをスキャンしてください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>マスター品の設定を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="355"/>
         <source>cancelled: no recipe was made</source>
         <translation>キャンセル: レシピは作成していません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="394"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="395"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>レシピ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>New recipe</source>
         <translation>新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Product name:</source>
         <translation>製品名:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>マスター品のバックアップファイル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="418"/>
         <source>Backups (*.json)</source>
         <translation>バックアップ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="430"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>バス上にドライバがありません: 先に接続してスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="438"/>
         <source>New recipe from drives</source>
         <translation>ドライバから新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="439"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>マスター品のドライバの局番（検出: %1）:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="449"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; は局番 (1–247) ではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>バス上のドライバから新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Save recipe</source>
         <translation>レシピを保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="476"/>
         <source>Saved and signed: %1</source>
         <translation>保存・署名しました: %1</translation>
     </message>
@@ -12240,7 +12890,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="202"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="207"/>
         <source>no unit record %1</source>
         <translation>製品の記録 %1 がありません</translation>
     </message>
@@ -12248,12 +12898,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="206"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="242"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果データベースのスキーマバージョン %1 は、このプログラムが対応するバージョン (%2) より新しいです: このステーションの OpenTOP を更新してください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="241"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="277"/>
         <source>the migration left a record pointing at no unit (table %1)</source>
         <translation>マイグレーション後、どの製品も指していない記録が残っています（テーブル %1）</translation>
     </message>
@@ -12303,22 +12953,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>製品にはシリアル番号が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="190"/>
+        <location filename="../model/eol/ResultStore.cpp" line="205"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>製品の終了は pass、fail、error、aborted のいずれかで、%1 は使えません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="220"/>
+        <location filename="../model/eol/ResultStore.cpp" line="235"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>製品 %1（シリアル %2）は結果データベースで開始されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="222"/>
+        <location filename="../model/eol/ResultStore.cpp" line="237"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>製品 %1（シリアル %2）はすでに %3 として記録されています。その記録を保持します</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="244"/>
+        <location filename="../model/eol/ResultStore.cpp" line="259"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>製品 %1（シリアル %2）は結果データベースで実行中ではありません: 開始されていないか、すでに終了または中断としてマークされています</translation>
     </message>
@@ -14495,46 +15145,95 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
 </context>
 <context>
+    <name>opentop::StationAccess</name>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="74"/>
+        <location filename="../model/access/StationAccess.cpp" line="127"/>
+        <source>the results database is not open</source>
+        <translation>結果データベースが開いていません</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="105"/>
+        <source>the results database is not open, so nobody can be identified</source>
+        <translation>結果データベースが開いていないため、誰も確認できません</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="160"/>
+        <source>the station&apos;s users are being read from the results database</source>
+        <translation>結果データベースからステーションのユーザーを読み込み中です</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="161"/>
+        <source>the station&apos;s users cannot be read: %1</source>
+        <translation>ステーションのユーザーを読み込めません: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="166"/>
+        <source>nobody is logged in: log in with your user name and password (or badge)</source>
+        <translation>誰もログインしていません: ユーザー名とパスワード (または社員証) でログインしてください</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="170"/>
+        <source>the recipe&apos;s approval is being read from the results database</source>
+        <translation>結果データベースからレシピの承認を読み込み中です</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="19"/>
+        <location filename="../ui/eol/StationActions.cpp" line="22"/>
         <source>Reset alarm and test again</source>
         <translation>アラームリセットして再試験</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="20"/>
+        <location filename="../ui/eol/StationActions.cpp" line="23"/>
         <source>Technician: test again…</source>
         <translation>技術者: 再試験…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="50"/>
+        <location filename="../ui/eol/StationActions.cpp" line="53"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>局番 %1 のアラームをリセットしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="59"/>
+        <location filename="../ui/eol/StationActions.cpp" line="62"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>アラームが解除されていません。何も開始していません:
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="84"/>
+        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <source>reset the alarm</source>
+        <translation>アラームをリセットする</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <source>serial %1</source>
+        <translation>シリアル %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <source>test serial %1 again</source>
+        <translation>シリアル %1 を再試験する</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="101"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>試験前に局番 %1 でアラームが発生していました。何も書き込んでいません。アラームをリセットすると（ドライバ自身のリセット。電源再投入が必要なアラームはその旨を表示します）、製品を再試験します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="97"/>
+        <location filename="../ui/eol/StationActions.cpp" line="130"/>
         <source>(no name)</source>
         <translation>（名前なし）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="99"/>
+        <location filename="../ui/eol/StationActions.cpp" line="132"/>
         <source>Test again</source>
         <translation>再試験</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="100"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -14587,6 +15286,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationFigures.cpp" line="35"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>このステーション、このレシピバージョン、%1 以降（%2 に読込み）。同じ数値を表示するコマンド: %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationLogin</name>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <source>operator</source>
+        <translation>作業者</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <source>Operator:</source>
+        <translation>作業者:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <source>user name</source>
+        <translation>ユーザー名</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <source>password</source>
+        <translation>パスワード</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <source>Log in</source>
+        <translation>ログイン</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <source>Log in:</source>
+        <translation>ログイン:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <source>Log out</source>
+        <translation>ログアウト</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <source>Not logged in: %1</source>
+        <translation>ログインできません: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
+        <translation>ログイン中: &lt;b&gt;%1&lt;/b&gt; (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
+        <translation>ユーザーが設定されていません: 誰でも実行・編集・終了できます。opentop-cli eol user add でユーザーを設定してください</translation>
     </message>
 </context>
 <context>
@@ -17136,32 +17888,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="113"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>製品の記録ではありません（format が &quot;%1&quot; ではありません）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="118"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>製品記録のバージョン %1 はこのプログラムでは不明です（%2 まで読込み可能）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="123"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="125"/>
         <source>the unit record has no serial number</source>
         <translation>製品記録にシリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="135"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="139"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>不明な製品ステータス &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="149"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="153"/>
         <source>unknown variant source &quot;%1&quot;</source>
         <translation>不明な機種の確認方法「%1」</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="188"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>JSON ではありません: %1</translation>
     </message>
@@ -17290,6 +18042,14 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;プログラムの詳細な説明: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UserStore</name>
+    <message>
+        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
+        <translation>ユーザー名は 1〜64 文字の英字、数字、. _ @ - です (空白なし): &quot;%1&quot;</translation>
     </message>
 </context>
 <context>

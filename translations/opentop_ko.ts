@@ -474,6 +474,176 @@
     </message>
 </context>
 <context>
+    <name>opentop::AccessCheck</name>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="27"/>
+        <source>%1 (%2) may not %3: it needs the %4 role or higher</source>
+        <translation>%1(%2)은(는) %3 권한이 없습니다: %4 이상의 역할이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="39"/>
+        <location filename="../model/access/AccessCheck.cpp" line="49"/>
+        <location filename="../model/access/AccessCheck.cpp" line="122"/>
+        <source>the users cannot be read from the results database: %1</source>
+        <translation>결과 데이터베이스에서 사용자를 읽을 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="54"/>
+        <source>wrong user name or password</source>
+        <translation>사용자 이름 또는 비밀번호가 틀렸습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="56"/>
+        <source>user &quot;%1&quot;: wrong user name or password</source>
+        <translation>사용자 &quot;%1&quot;: 사용자 이름 또는 비밀번호가 틀렸습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="60"/>
+        <source>user %1 is disabled</source>
+        <translation>사용자 %1은(는) 비활성화되어 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="98"/>
+        <source>logged in as %1</source>
+        <translation>%1(으)로 로그인</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="123"/>
+        <source>user %1 is not an active user</source>
+        <translation>사용자 %1은(는) 활성 사용자가 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="136"/>
+        <source>recipe %1 rev. %2, checksum %3</source>
+        <translation>레시피 %1 rev. %2, 체크섬 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="142"/>
+        <source>this station has no users yet: an approval names its approver, so add users first (opentop-cli eol user add)</source>
+        <translation>이 스테이션에는 아직 사용자가 없습니다: 승인에는 승인자가 기록되므로 먼저 사용자를 추가하십시오(opentop-cli eol user add)</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="151"/>
+        <source>the approval was not recorded: %1</source>
+        <translation>승인이 기록되지 않았습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="155"/>
+        <source>%1; approval %2</source>
+        <translation>%1; 승인 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="184"/>
+        <source>the first user must be an administrator (--role administrator): they add everyone else</source>
+        <translation>첫 사용자는 관리자여야 합니다(--role administrator): 나머지 사용자는 관리자가 추가합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="189"/>
+        <source>add user %1</source>
+        <translation>사용자 %1 추가</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="196"/>
+        <source>user %1 exists already</source>
+        <translation>사용자 %1이(가) 이미 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="202"/>
+        <source>user %1 (%2) added as %3</source>
+        <translation>사용자 %1(%2)을(를) %3(으)로 추가했습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>enable user %1</source>
+        <translation>사용자 %1 활성화</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>disable user %1</source>
+        <translation>사용자 %1 비활성화</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="216"/>
+        <location filename="../model/access/AccessCheck.cpp" line="256"/>
+        <source>there are no users yet</source>
+        <translation>아직 사용자가 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="223"/>
+        <location filename="../model/access/AccessCheck.cpp" line="262"/>
+        <source>no user %1</source>
+        <translation>사용자 %1이(가) 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="228"/>
+        <source>%1 is the last active administrator: add another first</source>
+        <translation>%1은(는) 마지막 활성 관리자입니다: 먼저 다른 관리자를 추가하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="254"/>
+        <source>set the password of %1</source>
+        <translation>%1의 비밀번호 설정</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AccessPolicy</name>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="76"/>
+        <source>operator</source>
+        <translation>작업자</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="78"/>
+        <source>technician</source>
+        <translation>기술자</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="80"/>
+        <source>engineer</source>
+        <translation>엔지니어</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="84"/>
+        <source>administrator</source>
+        <translation>관리자</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="96"/>
+        <source>test units</source>
+        <translation>제품 검사</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="98"/>
+        <source>reset an alarm and retry</source>
+        <translation>알람 리셋 후 재시도</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="100"/>
+        <source>override a retest limit</source>
+        <translation>재검사 한도 해제</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="102"/>
+        <source>leave production mode</source>
+        <translation>생산 모드 종료</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="104"/>
+        <source>open or edit a recipe</source>
+        <translation>레시피 열기 또는 편집</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="106"/>
+        <source>approve a recipe</source>
+        <translation>레시피 승인</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="110"/>
+        <source>manage users</source>
+        <translation>사용자 관리</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AddressSwitches</name>
     <message>
         <location filename="../model/profile/AddressSwitches.cpp" line="66"/>
@@ -2391,7 +2561,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
@@ -2432,7 +2602,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
@@ -2448,234 +2618,249 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <source>Recipe approved by</source>
+        <translation>레시피 승인자</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <source>not approved (station without users)</source>
+        <translation>승인 없음(사용자가 없는 스테이션)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <source>%1 (approval %2)</source>
+        <translation>%1(승인 %2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Attempt</source>
         <translation>검사 회차</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>%1회차 (이 레시피에서 이 시리얼의 검사 차수)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>집계 안 됨 (검사 회차를 기록하기 전의 기록)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
         <source>Ended</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>Record</source>
         <translation>기록</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="96"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>First failure:</source>
         <translation>첫 불합격 항목:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>이 시리얼은 이전 검사에서 %n회 불합격했습니다. 아래에 그 목록이 있습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
         <source>Drives</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Variant</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>How known</source>
         <translation>확인 방법</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Written</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Read back</source>
         <translation>다시 읽은 값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Verified</source>
         <translation>검증</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>already set</source>
         <translation>이미 설정됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>yes</source>
         <translation>예</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>NO</source>
         <translation>아니요</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
         <source>Measurements</source>
         <translation>측정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Step</source>
         <translation>단계</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Quantity</source>
         <translation>측정 항목</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Limits</source>
         <translation>한계값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>pass</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
         <source>Earlier tests of this serial</source>
         <translation>이 시리얼의 이전 검사</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="154"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
         <source>Bus traffic around the failure</source>
         <translation>불합격 전후의 버스 통신</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="169"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
         <source>read from the drive</source>
         <translation>드라이버에서 읽음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="171"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
         <source>proven by the variant probe</source>
         <translation>기종 확인으로 입증됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="173"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>confirmed by a person</source>
         <translation>사람이 확인함</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="175"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>ASSUMED, not proven</source>
         <translation>추정, 확인되지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="179"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="185"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
         <source>not known</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="187"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
         <source>%1 (assumed)</source>
         <translation>%1 (추정)</translation>
     </message>
@@ -2832,6 +3017,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../cli/CliContext.cpp" line="326"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CliIdentity</name>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
+        <translation>수행하는 사람(결과 데이터베이스의 사용자). 비밀번호는 OPENTOP_PASSWORD에서 가져오거나 터미널에서 묻습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <source>NAME</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <source>error: no password: set %1 or run on a terminal</source>
+        <translation>오류: 비밀번호가 없습니다: %1을(를) 설정하거나 터미널에서 실행하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <source>Again: </source>
+        <translation>다시 입력: </translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <source>error: the passwords differ; nothing was changed</source>
+        <translation>오류: 비밀번호가 서로 다릅니다. 아무것도 변경하지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <source>error: name who does it with --user NAME</source>
+        <translation>오류: --user NAME으로 수행하는 사람을 지정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <source>Password for %1: </source>
+        <translation>%1의 비밀번호: </translation>
     </message>
 </context>
 <context>
@@ -4783,6 +5006,95 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::EolAuditCommand</name>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
+        <translation>감사 기록 표시: 누가 로그인, 승인했는지, 권한을 사용했거나 거부당했는지</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
+        <translation>audit: T 이후(2026-11-24, 8h, 2d, today).</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <source>audit: only this user.</source>
+        <translation>audit: 이 사용자만.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>NAME</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>audit: only this station.</source>
+        <translation>audit: 이 스테이션만.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>사용법: opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <source>error: --since: %1</source>
+        <translation>오류: --since: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <source>error: %1</source>
+        <translation>오류: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <source>no audit entry matches</source>
+        <translation>일치하는 감사 기록이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>time</source>
+        <translation>시각</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>station</source>
+        <translation>스테이션</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>user</source>
+        <translation>사용자</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>action</source>
+        <translation>동작</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>detail</source>
+        <translation>내용</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolCertificateCommand</name>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
@@ -5028,14 +5340,57 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
         <source>&amp;Recipe editor…</source>
         <translation>레시피 편집기(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <source>the recipe editor</source>
+        <translation>레시피 편집기</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
         <source>Re&amp;sults…</source>
         <translation>결과(&amp;S)…</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRecipeApproveCommand</name>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
+        <translation>서명된 레시피를 라인용으로 승인(엔지니어): 이후 스테이션에서 실행됩니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>사용법: opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <source>%1: the recipe is not valid, so it cannot be approved:</source>
+        <translation>%1: 레시피가 유효하지 않아 승인할 수 없습니다:</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <source>error: %1; the recipe was not approved</source>
+        <translation>오류: %1. 레시피는 승인되지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
+        <translation>%1 rev. %2을(를) %3이(가) 승인했습니다(승인 %4, 체크섬 %5)</translation>
     </message>
 </context>
 <context>
@@ -5636,6 +5991,11 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
     <message>
         <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <source>approved by</source>
+        <translation>승인자</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
@@ -5780,58 +6140,58 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="57"/>
+        <location filename="../model/eol/EolRun.cpp" line="59"/>
         <source>recording the unit before anything is sent</source>
         <translation>전송하기 전에 제품을 기록하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="63"/>
+        <location filename="../model/eol/EolRun.cpp" line="65"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>결과 데이터베이스에 제품을 기록할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="96"/>
+        <location filename="../model/eol/EolRun.cpp" line="98"/>
         <source>the recipe has no drives</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="111"/>
         <source>the recipe is not valid: %1</source>
         <translation>레시피가 올바르지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="114"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1: 이 제품의 %2 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="132"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>cancelled by the operator</source>
         <translation>작업자가 취소함</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="145"/>
         <source>the connection was lost: %1</source>
         <translation>연결이 끊겼습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="151"/>
-        <location filename="../model/eol/EolRun.cpp" line="159"/>
+        <location filename="../model/eol/EolRun.cpp" line="153"/>
+        <location filename="../model/eol/EolRun.cpp" line="161"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="156"/>
+        <location filename="../model/eol/EolRun.cpp" line="158"/>
         <source>%1 failed</source>
         <translation>%1 실패</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="196"/>
+        <location filename="../model/eol/EolRun.cpp" line="198"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="205"/>
+        <location filename="../model/eol/EolRun.cpp" line="207"/>
         <source>recording the result</source>
         <translation>결과를 기록하는 중</translation>
     </message>
@@ -5839,196 +6199,242 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="90"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <source>Who tests it (default: the login name).</source>
-        <translation>검사하는 사람(기본값: 로그인 이름).</translation>
+        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <source>Who tests it, on a station without users (default: the login name).</source>
+        <translation>사용자가 없는 스테이션에서 검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="107"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>레시피 규칙으로 막힌 재검사(이미 합격한 시리얼, 또는 검사 횟수를 다 쓴 시리얼)를 기술자가 허가합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="144"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="143"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="166"/>
+        <location filename="../cli/EolRunCommand.cpp" line="172"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2은(는) %3을(를) 허용합니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="168"/>
+        <location filename="../cli/EolRunCommand.cpp" line="174"/>
         <source>any %1 variant</source>
         <translation>모든 %1 기종</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="177"/>
+        <location filename="../cli/EolRunCommand.cpp" line="183"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: 레시피에 국번 %2의 위치가 없습니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="191"/>
+        <location filename="../cli/EolRunCommand.cpp" line="197"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="206"/>
+        <location filename="../cli/EolRunCommand.cpp" line="212"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="237"/>
+        <location filename="../cli/EolRunCommand.cpp" line="243"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="241"/>
+        <location filename="../cli/EolRunCommand.cpp" line="247"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="246"/>
+        <location filename="../cli/EolRunCommand.cpp" line="252"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="265"/>
+        <location filename="../cli/EolRunCommand.cpp" line="278"/>
         <source>error: %1; nothing was sent</source>
         <translation>오류: %1. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="267"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>a technician allows it with --retest</source>
         <translation>기술자가 --retest로 허가할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="271"/>
+        <location filename="../cli/EolRunCommand.cpp" line="284"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>참고: %1. --retest의 허가로 다시 검사합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="292"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>station: %1</source>
         <translation>스테이션: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="296"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="334"/>
-        <location filename="../cli/EolRunCommand.cpp" line="355"/>
+        <location filename="../cli/EolRunCommand.cpp" line="349"/>
+        <location filename="../cli/EolRunCommand.cpp" line="370"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="378"/>
+        <location filename="../cli/EolRunCommand.cpp" line="393"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="409"/>
+        <location filename="../cli/EolRunCommand.cpp" line="424"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="411"/>
+        <location filename="../cli/EolRunCommand.cpp" line="426"/>
         <source>attempt %1</source>
         <translation>%1회차 검사</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="418"/>
+        <location filename="../cli/EolRunCommand.cpp" line="433"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="420"/>
+        <location filename="../cli/EolRunCommand.cpp" line="435"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
+        <location filename="../cli/EolRunCommand.cpp" line="440"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRunIdentity</name>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <source>the results database is not open</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <source>results database: %1; nothing was sent</source>
+        <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <source>refused: %1; nothing was sent</source>
+        <translation>거부됨: %1. 아무것도 보내지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
+        <translation>이 스테이션에는 사용자가 있습니다: --user NAME으로 검사하는 사람을 지정하십시오(비밀번호는 OPENTOP_PASSWORD 또는 터미널에서)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
+        <translation>오류: 사용자가 있는 스테이션에서는 로그인한 사용자(--user)가 작업자입니다. --operator는 받지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <source>run-units: recipe checksum %1 is not approved</source>
+        <translation>run-units: 레시피 체크섬 %1은(는) 승인되지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <source>refused: %1 Nothing was sent.</source>
+        <translation>거부됨: %1 아무것도 보내지 않았습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <source>%1 logged in; recipe approved by %2 (approval %3)</source>
+        <translation>%1 로그인. 레시피 승인자 %2(승인 %3)</translation>
     </message>
 </context>
 <context>
@@ -6058,83 +6464,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="170"/>
+        <location filename="../model/eol/EolStation.cpp" line="180"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="177"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="169"/>
+        <location filename="../model/eol/EolStation.cpp" line="179"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="178"/>
+        <location filename="../model/eol/EolStation.cpp" line="188"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="182"/>
+        <location filename="../model/eol/EolStation.cpp" line="192"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="187"/>
+        <location filename="../model/eol/EolStation.cpp" line="197"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="206"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="198"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="218"/>
+        <source>run-units: serial %1: %2</source>
+        <translation>run-units: 시리얼 번호 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="222"/>
+        <location filename="../model/eol/EolStation.cpp" line="270"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="212"/>
+        <location filename="../model/eol/EolStation.cpp" line="230"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="230"/>
+        <location filename="../model/eol/EolStation.cpp" line="252"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <location filename="../model/eol/EolStation.cpp" line="272"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="313"/>
+        <location filename="../model/eol/EolStation.cpp" line="306"/>
+        <source>serial %1 tested again, allowed by %2: %3</source>
+        <translation>시리얼 %1 재시험, %2 허가: %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="342"/>
         <source>no unit was started yet</source>
         <translation>아직 검사를 시작한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="325"/>
+        <location filename="../model/eol/EolStation.cpp" line="354"/>
         <source>cancelled before it started</source>
         <translation>시작 전에 취소됨</translation>
     </message>
@@ -6339,13 +6755,13 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="38"/>
-        <location filename="../cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="159"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="65"/>
-        <location filename="../cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="176"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -6403,7 +6819,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="167"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>오류: %1에 결과 데이터베이스가 없습니다(아직 기록된 것 없음). --db URL로 지정하십시오</translation>
     </message>
@@ -6430,6 +6846,146 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1이(가) 이 제품의 범위 %2–%3 %4을(를) 벗어납니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolUserCommand</name>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
+        <translation>사용자 추가(작업자, 기술자, 엔지니어 또는 관리자). 첫 사용자는 관리자이며 --user가 필요 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <source>List the users of the results database</source>
+        <translation>결과 데이터베이스의 사용자 목록</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <source>Disable a user: they can no longer log in; their records stay</source>
+        <translation>사용자 비활성화: 더 이상 로그인할 수 없으며 기록은 남습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
+        <translation>사용자 비밀번호 설정(본인 것은 기존 비밀번호로, 관리자는 누구의 것이든)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <source>user add: operator, technician, engineer or administrator.</source>
+        <translation>user add: operator, technician, engineer 또는 administrator.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <source>ROLE</source>
+        <translation>역할</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <source>user add: the name shown on the screen.</source>
+        <translation>user add: 화면에 표시되는 이름.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <source>TEXT</source>
+        <translation>텍스트</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="108"/>
+        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <source>error: %1</source>
+        <translation>오류: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
+        <translation>사용자 없음: 이 스테이션은 관리되지 않습니다(누구나 실행, 편집, 종료 가능). 첫 관리자 추가: opentop-cli eol user add NAME --role administrator</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>user</source>
+        <translation>사용자</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>name</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>role</source>
+        <translation>역할</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>active</source>
+        <translation>활성</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>created</source>
+        <translation>생성</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>yes</source>
+        <translation>예</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>no (disabled)</source>
+        <translation>아니요(비활성)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>사용법: opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <source>error: --role is one of: %1</source>
+        <translation>오류: --role은 다음 중 하나입니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <source>Present password for %1: </source>
+        <translation>%1의 현재 비밀번호: </translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="191"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <source>New password for %1: </source>
+        <translation>%1의 새 비밀번호: </translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <source>user %1 added as %2</source>
+        <translation>사용자 %1을(를) %2(으)로 추가했습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <source>user %1 disabled</source>
+        <translation>사용자 %1을(를) 비활성화했습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <source>password of %1 changed</source>
+        <translation>%1의 비밀번호를 변경했습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <source>error: %1; nothing was changed</source>
+        <translation>오류: %1. 아무것도 변경하지 않았습니다</translation>
     </message>
 </context>
 <context>
@@ -7376,6 +7932,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
 </context>
 <context>
+    <name>opentop::IdentityDialog</name>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <source>Who is it?</source>
+        <translation>누구십니까?</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
+        <translation>%1 작업에는 이 스테이션에서 %2 이상의 역할이 필요합니다. 사용자 이름과 비밀번호로 로그인하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <source>User name:</source>
+        <translation>사용자 이름:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <source>Password:</source>
+        <translation>비밀번호:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <source>Refused: %1</source>
+        <translation>거부됨: %1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::InputFile</name>
     <message>
         <location filename="../model/files/InputFile.cpp" line="13"/>
@@ -7931,28 +8515,28 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="140"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="163"/>
+        <location filename="../ui/main/MainWindow.cpp" line="164"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1에 연결하는 중… (%2에 아직 연결되어 있음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="202"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>연결됨: %1 (새 연결 실패: %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
-        <location filename="../ui/main/MainWindow.cpp" line="219"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="220"/>
         <source>Cannot connect</source>
         <translation>연결할 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7961,76 +8545,76 @@ Still connected to %2; nothing was changed.</source>
 %2에 아직 연결되어 있습니다. 아무것도 변경하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="209"/>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="210"/>
+        <location filename="../ui/main/MainWindow.cpp" line="342"/>
         <source>Not connected: %1</source>
         <translation>연결 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="280"/>
+        <location filename="../ui/main/MainWindow.cpp" line="281"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="311"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="314"/>
         <source>Connection lost: %1</source>
         <translation>연결 끊김: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 시뮬레이션 버스 (실제 하드웨어 없음) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="321"/>
         <source>Connecting to %1…</source>
         <translation>%1에 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="347"/>
+        <location filename="../ui/main/MainWindow.cpp" line="348"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="375"/>
+        <location filename="../ui/main/MainWindow.cpp" line="376"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="412"/>
+        <location filename="../ui/main/MainWindow.cpp" line="413"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
-        <location filename="../ui/main/MainWindow.cpp" line="453"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="454"/>
         <source>quit</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>Unwritten changes</source>
         <translation>쓰지 않은 변경 사항</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
+        <location filename="../ui/main/MainWindow.cpp" line="441"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
@@ -9404,6 +9988,14 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::PasswordHash</name>
+    <message>
+        <location filename="../model/access/PasswordHash.cpp" line="52"/>
+        <source>a password needs at least %1 characters</source>
+        <translation>비밀번호는 %1자 이상이어야 합니다</translation>
+    </message>
+</context>
+<context>
     <name>opentop::PidGains</name>
     <message>
         <location filename="../model/tuning/PidGains.cpp" line="9"/>
@@ -9465,32 +10057,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>생산 모드(&amp;P) (출하 검사)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>출하 검사 스테이션의 작업자 화면. 다시 전환할 때까지 파라미터 편집 불가(Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
         <source>&amp;Full screen</source>
         <translation>전체 화면(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
         <source>&amp;Station name…</source>
         <translation>스테이션 이름(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>이 출하 검사 스테이션이 모든 유닛에 기록하는 이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9499,53 +10091,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 결과를 기록할 수 있을 때까지 어떤 제품도 검사할 수 없습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
         <source>Station name</source>
         <translation>스테이션 이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>이 스테이션이 모든 유닛에 기록하는 이름(한 라인의 각 스테이션은 고유한 이름이 필요합니다):</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
         <source>A station needs a name.</source>
         <translation>스테이션에는 이름이 필요합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>유닛을 검사 중입니다: 완료된 후 이름을 변경하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
         <source>Production mode</source>
         <translation>생산 모드</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>제품 검사 중입니다. 엔지니어링 모드로 돌아가기 전에 검사를 취소(Esc)하거나 끝날 때까지 기다리십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
         <source>Results database</source>
         <translation>결과 데이터베이스</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <source>leave production mode</source>
+        <translation>생산 모드 종료</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
         <source>A unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="151"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>제품 %1을(를) 검사 중입니다. 검사를 취소하고 %2하시겠습니까? 먼저 모터를 정지하며, 제품은 중지됨으로 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
         <source>cancelled to %1</source>
         <translation>%1하기 위해 취소함</translation>
     </message>
@@ -9618,77 +10215,67 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="65"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
-        <source>operator</source>
-        <translation>작업자</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Operator:</source>
-        <translation>작업자:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="97"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="89"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="189"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>READY</source>
         <translation>준비 완료</translation>
     </message>
@@ -9707,210 +10294,215 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
+        <source>open another recipe</source>
+        <translation>다른 레시피 열기</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="257"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="269"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="274"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>another</source>
         <translation>다른 유닛</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="324"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="344"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="490"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="495"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="177"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>NOT STARTED</source>
         <translation>시작 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="356"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="343"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>TESTING</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
         <source>Unit %1 — attempt %2</source>
         <translation>제품 %1 — %2회차</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="392"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="405"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1, 기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
         <source>%1 (kept on this station)</source>
         <translation>%1 (이 스테이션에 보관)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="419"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="424"/>
         <source>NOT RECORDED</source>
         <translation>기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="446"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
         <source>STATION ERROR</source>
         <translation>스테이션 오류</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="464"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="469"/>
         <source>%1
 Not a verdict on the unit: fix the cause and test it again.</source>
         <translation>%1
 제품 판정이 아닙니다: 원인을 해결한 뒤 다시 검사하십시오.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="477"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="482"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="486"/>
         <source>it does not answer</source>
         <translation>데이터베이스가 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="484"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="489"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="385"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="455"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="390"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="447"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="460"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="454"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="459"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="467"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="398"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="394"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10223,6 +10815,64 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RecipeApprovals</name>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
+        <translation>레시피 &quot;%1&quot; rev. %2는 초안입니다: 이 버전(체크섬)은 승인되지 않아 실행되지 않습니다. 엔지니어가 승인합니다(레시피 편집기의 승인… 또는 opentop-cli eol recipe approve FILE --user NAME).</translation>
+    </message>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <source>a recipe without a checksum cannot be approved: sign it first</source>
+        <translation>체크섬이 없는 레시피는 승인할 수 없습니다: 먼저 서명하십시오</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeApproveButton</name>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <source>Approve…</source>
+        <translation>승인…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
+        <translation>저장된 레시피를 라인용으로 승인(엔지니어): 사용자가 있는 스테이션은 승인된 레시피만 실행합니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <source>Approve recipe</source>
+        <translation>레시피 승인</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
+        <translation>먼저 레시피를 저장하십시오: 승인되는 것은 저장된 파일의 체크섬입니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <source>%1 cannot be approved: %2</source>
+        <translation>%1을(를) 승인할 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
+        <translation>이 스테이션에는 사용자가 없습니다: 승인에는 승인자가 기록됩니다. opentop-cli eol user add로 사용자를 설정하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <source>approve %1 rev. %2</source>
+        <translation>%1 rev. %2 승인</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <source>%1 rev. %2 is approved by %3: stations run it.</source>
+        <translation>%1 rev. %2을(를) %3이(가) 승인했습니다: 스테이션에서 실행됩니다.</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeBuilder</name>
     <message>
         <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
@@ -10420,7 +11070,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>Revision:</source>
         <translation>개정:</translation>
     </message>
@@ -10465,167 +11115,167 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>다른 이름으로 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>버스에 있는 기준 제품의 드라이버나 그 백업 파일로 레시피를 만들거나, 레시피를 여십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>레시피가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>레시피가 검사를 통과했습니다: 저장하고 실행할 수 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>문제 %n건: 수정할 때까지 레시피를 저장할 수 없습니다.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>레시피가 검사를 통과하지 못했습니다(문제 %n건). 아무것도 저장하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1은(는) OpenTOP 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>%1 열림</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1을(를) 열었지만 그대로는 불러올 수 없습니다(%2). 저장하면 검사 후 다시 서명합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="323"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1에서 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>국번 %1은(는) 버스에 알려진 드라이버가 아닙니다. 먼저 버스를 스캔하십시오</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>기준 제품의 설정을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="355"/>
         <source>cancelled: no recipe was made</source>
         <translation>취소됨: 레시피를 만들지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="394"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="395"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>레시피 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>New recipe</source>
         <translation>새 레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Product name:</source>
         <translation>제품 이름:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>기준 제품의 백업 파일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="418"/>
         <source>Backups (*.json)</source>
         <translation>백업 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="430"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>버스에 드라이버가 없습니다: 먼저 연결하고 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="438"/>
         <source>New recipe from drives</source>
         <translation>드라이버로 새 레시피 만들기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="439"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>기준 제품 드라이버의 국번 (발견: %1):</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="449"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot;은(는) 국번(1–247)이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>버스의 드라이버로 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Save recipe</source>
         <translation>레시피 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="476"/>
         <source>Saved and signed: %1</source>
         <translation>저장 및 서명 완료: %1</translation>
     </message>
@@ -12240,7 +12890,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="202"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="207"/>
         <source>no unit record %1</source>
         <translation>제품 기록 %1 없음</translation>
     </message>
@@ -12248,12 +12898,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="206"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="242"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>결과 데이터베이스의 스키마 버전 %1이(가) 이 프로그램이 아는 버전(%2)보다 새롭습니다: 이 스테이션의 OpenTOP을 업데이트하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="241"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="277"/>
         <source>the migration left a record pointing at no unit (table %1)</source>
         <translation>마이그레이션 후 어떤 제품도 가리키지 않는 기록이 남았습니다(테이블 %1)</translation>
     </message>
@@ -12303,22 +12953,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>제품에는 시리얼 번호가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="190"/>
+        <location filename="../model/eol/ResultStore.cpp" line="205"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>제품은 %1이(가) 아니라 pass, fail, error 또는 aborted로 끝나야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="220"/>
+        <location filename="../model/eol/ResultStore.cpp" line="235"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 시작된 적이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="222"/>
+        <location filename="../model/eol/ResultStore.cpp" line="237"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>제품 %1(시리얼 %2)은(는) 이미 %3(으)로 기록되어 있습니다. 기존 기록을 유지합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="244"/>
+        <location filename="../model/eol/ResultStore.cpp" line="259"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 진행 중이 아닙니다: 시작된 적이 없거나, 이미 끝났거나, 중단됨으로 표시되었습니다</translation>
     </message>
@@ -14495,46 +15145,95 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
     </message>
 </context>
 <context>
+    <name>opentop::StationAccess</name>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="74"/>
+        <location filename="../model/access/StationAccess.cpp" line="127"/>
+        <source>the results database is not open</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="105"/>
+        <source>the results database is not open, so nobody can be identified</source>
+        <translation>결과 데이터베이스가 열려 있지 않아 누구도 확인할 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="160"/>
+        <source>the station&apos;s users are being read from the results database</source>
+        <translation>결과 데이터베이스에서 스테이션 사용자를 읽는 중입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="161"/>
+        <source>the station&apos;s users cannot be read: %1</source>
+        <translation>스테이션 사용자를 읽을 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="166"/>
+        <source>nobody is logged in: log in with your user name and password (or badge)</source>
+        <translation>로그인한 사람이 없습니다: 사용자 이름과 비밀번호(또는 사원증)로 로그인하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="170"/>
+        <source>the recipe&apos;s approval is being read from the results database</source>
+        <translation>결과 데이터베이스에서 레시피 승인을 읽는 중입니다</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="19"/>
+        <location filename="../ui/eol/StationActions.cpp" line="22"/>
         <source>Reset alarm and test again</source>
         <translation>알람 리셋 후 다시 검사</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="20"/>
+        <location filename="../ui/eol/StationActions.cpp" line="23"/>
         <source>Technician: test again…</source>
         <translation>기술자: 다시 검사…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="50"/>
+        <location filename="../ui/eol/StationActions.cpp" line="53"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>국번 %1의 알람을 리셋하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="59"/>
+        <location filename="../ui/eol/StationActions.cpp" line="62"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>알람이 해제되지 않았습니다. 아무것도 시작하지 않았습니다:
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="84"/>
+        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <source>reset the alarm</source>
+        <translation>알람 리셋</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <source>serial %1</source>
+        <translation>시리얼 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <source>test serial %1 again</source>
+        <translation>시리얼 %1 재시험</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="101"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>검사 전에 국번 %1에 알람이 발생해 있었습니다. 아무것도 쓰지 않았습니다. 알람을 리셋하면(드라이버 자체의 리셋 사용, 전원 재투입이 필요한 알람은 따로 표시됨) 제품을 다시 검사합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="97"/>
+        <location filename="../ui/eol/StationActions.cpp" line="130"/>
         <source>(no name)</source>
         <translation>(이름 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="99"/>
+        <location filename="../ui/eol/StationActions.cpp" line="132"/>
         <source>Test again</source>
         <translation>다시 검사</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="100"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -14587,6 +15286,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationFigures.cpp" line="35"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>이 스테이션, 이 레시피 버전, %1 이후 (%2에 읽음). 같은 수치를 보는 명령: %3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationLogin</name>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <source>operator</source>
+        <translation>작업자</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <source>Operator:</source>
+        <translation>작업자:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <source>user name</source>
+        <translation>사용자 이름</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <source>password</source>
+        <translation>비밀번호</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <source>Log in</source>
+        <translation>로그인</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <source>Log in:</source>
+        <translation>로그인:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <source>Log out</source>
+        <translation>로그아웃</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <source>Not logged in: %1</source>
+        <translation>로그인하지 못했습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
+        <translation>로그인: &lt;b&gt;%1&lt;/b&gt;(%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
+        <translation>사용자가 설정되지 않았습니다: 누구나 실행, 편집, 종료할 수 있습니다. opentop-cli eol user add로 사용자를 설정하십시오</translation>
     </message>
 </context>
 <context>
@@ -17136,32 +17888,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="113"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>제품 기록이 아닙니다(format이 &quot;%1&quot;이(가) 아님)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="118"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>제품 기록 버전 %1은(는) 이 프로그램이 알지 못합니다(%2까지 읽음)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="123"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="125"/>
         <source>the unit record has no serial number</source>
         <translation>제품 기록에 시리얼 번호가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="135"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="139"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>알 수 없는 제품 상태 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="149"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="153"/>
         <source>unknown variant source &quot;%1&quot;</source>
         <translation>알 수 없는 기종 출처 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="188"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>JSON이 아닙니다: %1</translation>
     </message>
@@ -17290,6 +18042,14 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;프로그램 전체 설명: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UserStore</name>
+    <message>
+        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
+        <translation>사용자 이름은 1~64자의 영문자, 숫자 또는 . _ @ -입니다(공백 없음): &quot;%1&quot;</translation>
     </message>
 </context>
 <context>

@@ -474,6 +474,176 @@
     </message>
 </context>
 <context>
+    <name>opentop::AccessCheck</name>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="27"/>
+        <source>%1 (%2) may not %3: it needs the %4 role or higher</source>
+        <translation>%1（%2）不可%3：需要%4或更高角色</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="39"/>
+        <location filename="../model/access/AccessCheck.cpp" line="49"/>
+        <location filename="../model/access/AccessCheck.cpp" line="122"/>
+        <source>the users cannot be read from the results database: %1</source>
+        <translation>无法从结果数据库读取用户：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="54"/>
+        <source>wrong user name or password</source>
+        <translation>用户名或密码错误</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="56"/>
+        <source>user &quot;%1&quot;: wrong user name or password</source>
+        <translation>用户“%1”：用户名或密码错误</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="60"/>
+        <source>user %1 is disabled</source>
+        <translation>用户 %1 已停用</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="98"/>
+        <source>logged in as %1</source>
+        <translation>以%1身份登录</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="123"/>
+        <source>user %1 is not an active user</source>
+        <translation>用户 %1 不是启用的用户</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="136"/>
+        <source>recipe %1 rev. %2, checksum %3</source>
+        <translation>配方 %1 版本 %2，校验和 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="142"/>
+        <source>this station has no users yet: an approval names its approver, so add users first (opentop-cli eol user add)</source>
+        <translation>此工位还没有用户：批准须记录批准人，请先添加用户（opentop-cli eol user add）</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="151"/>
+        <source>the approval was not recorded: %1</source>
+        <translation>批准未被记录：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="155"/>
+        <source>%1; approval %2</source>
+        <translation>%1；批准 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="184"/>
+        <source>the first user must be an administrator (--role administrator): they add everyone else</source>
+        <translation>第一个用户必须是管理员（--role administrator）：由其添加其他所有人</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="189"/>
+        <source>add user %1</source>
+        <translation>添加用户 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="196"/>
+        <source>user %1 exists already</source>
+        <translation>用户 %1 已存在</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="202"/>
+        <source>user %1 (%2) added as %3</source>
+        <translation>已添加用户 %1（%2），角色 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>enable user %1</source>
+        <translation>启用用户 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>disable user %1</source>
+        <translation>停用用户 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="216"/>
+        <location filename="../model/access/AccessCheck.cpp" line="256"/>
+        <source>there are no users yet</source>
+        <translation>还没有任何用户</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="223"/>
+        <location filename="../model/access/AccessCheck.cpp" line="262"/>
+        <source>no user %1</source>
+        <translation>没有用户 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="228"/>
+        <source>%1 is the last active administrator: add another first</source>
+        <translation>%1 是最后一位启用的管理员：请先添加另一位</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="254"/>
+        <source>set the password of %1</source>
+        <translation>设置 %1 的密码</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AccessPolicy</name>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="76"/>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="78"/>
+        <source>technician</source>
+        <translation>技术员</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="80"/>
+        <source>engineer</source>
+        <translation>工程师</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="84"/>
+        <source>administrator</source>
+        <translation>管理员</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="96"/>
+        <source>test units</source>
+        <translation>测试产品</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="98"/>
+        <source>reset an alarm and retry</source>
+        <translation>复位报警并重试</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="100"/>
+        <source>override a retest limit</source>
+        <translation>解除复测次数上限</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="102"/>
+        <source>leave production mode</source>
+        <translation>退出生产模式</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="104"/>
+        <source>open or edit a recipe</source>
+        <translation>打开或编辑配方</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="106"/>
+        <source>approve a recipe</source>
+        <translation>批准配方</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="110"/>
+        <source>manage users</source>
+        <translation>管理用户</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AddressSwitches</name>
     <message>
         <location filename="../model/profile/AddressSwitches.cpp" line="66"/>
@@ -2391,7 +2561,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
@@ -2432,7 +2602,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
@@ -2448,234 +2618,249 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <source>Recipe approved by</source>
+        <translation>配方批准人</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <source>not approved (station without users)</source>
+        <translation>未批准（工位无用户）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <source>%1 (approval %2)</source>
+        <translation>%1（批准 %2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Attempt</source>
         <translation>测试次数</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>第 %1 次（该序列号在此配方下的测试）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>未计次（记录时尚未统计测试次数）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
         <source>Ended</source>
         <translation>结束时间</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="96"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>First failure:</source>
         <translation>首个不合格项：</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>该序列号此前有 %n 次测试不合格，列于下方。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
         <source>Drives</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Variant</source>
         <translation>机型</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>How known</source>
         <translation>如何得知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Settings</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Read back</source>
         <translation>回读</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Verified</source>
         <translation>已校验</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>already set</source>
         <translation>已是该值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
         <source>Measurements</source>
         <translation>测量值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Quantity</source>
         <translation>测量项</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
         <source>Earlier tests of this serial</source>
         <translation>该序列号此前的测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="154"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前后的总线报文</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="169"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
         <source>read from the drive</source>
         <translation>从驱动器读取</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="171"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
         <source>proven by the variant probe</source>
         <translation>由机型探测证实</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="173"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>confirmed by a person</source>
         <translation>由人员确认</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="175"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>ASSUMED, not proven</source>
         <translation>推定，未证实</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="179"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="185"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
         <source>not known</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="187"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
         <source>%1 (assumed)</source>
         <translation>%1（推定）</translation>
     </message>
@@ -2832,6 +3017,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../cli/CliContext.cpp" line="326"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CliIdentity</name>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
+        <translation>执行者（结果数据库的用户）；密码取自 OPENTOP_PASSWORD，否则在终端上询问。</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <source>NAME</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <source>error: no password: set %1 or run on a terminal</source>
+        <translation>错误：没有密码：请设置 %1 或在终端上运行</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <source>Again: </source>
+        <translation>再输入一次：</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <source>error: the passwords differ; nothing was changed</source>
+        <translation>错误：两次密码不同；未做任何更改</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <source>error: name who does it with --user NAME</source>
+        <translation>错误：请用 --user NAME 指定执行者</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <source>Password for %1: </source>
+        <translation>%1 的密码：</translation>
     </message>
 </context>
 <context>
@@ -4783,6 +5006,95 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::EolAuditCommand</name>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
+        <translation>显示审计记录：谁登录、批准、使用或被拒绝某项权限</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
+        <translation>audit：T 当时或之后（2026-11-24、8h、2d、today）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <source>audit: only this user.</source>
+        <translation>audit：仅此用户。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>NAME</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>audit: only this station.</source>
+        <translation>audit：仅此工位。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>用法：opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <source>error: --since: %1</source>
+        <translation>错误：--since：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <source>error: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <source>no audit entry matches</source>
+        <translation>没有匹配的审计记录</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>station</source>
+        <translation>工位</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>user</source>
+        <translation>用户</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>action</source>
+        <translation>操作</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>detail</source>
+        <translation>详情</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolCertificateCommand</name>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
@@ -5028,14 +5340,57 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
         <source>&amp;Recipe editor…</source>
         <translation>配方编辑器(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <source>the recipe editor</source>
+        <translation>配方编辑器</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
         <source>Re&amp;sults…</source>
         <translation>结果(&amp;S)…</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRecipeApproveCommand</name>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
+        <translation>批准已签名的配方供产线使用（工程师）：之后工位即可运行</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>用法：opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <source>%1: the recipe is not valid, so it cannot be approved:</source>
+        <translation>%1：配方无效，因此无法批准：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <source>error: %1; the recipe was not approved</source>
+        <translation>错误：%1；配方未批准</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
+        <translation>%1 版本 %2 已由 %3 批准（批准 %4，校验和 %5）</translation>
     </message>
 </context>
 <context>
@@ -5636,6 +5991,11 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
     <message>
         <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <source>approved by</source>
+        <translation>批准人</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
@@ -5780,58 +6140,58 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="57"/>
+        <location filename="../model/eol/EolRun.cpp" line="59"/>
         <source>recording the unit before anything is sent</source>
         <translation>发送任何内容前正在记录产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="63"/>
+        <location filename="../model/eol/EolRun.cpp" line="65"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>结果数据库无法记录该产品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="96"/>
+        <location filename="../model/eol/EolRun.cpp" line="98"/>
         <source>the recipe has no drives</source>
         <translation>配方中没有驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="111"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方无效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="114"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：该产品没有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="132"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>cancelled by the operator</source>
         <translation>已被操作员取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="145"/>
         <source>the connection was lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="151"/>
-        <location filename="../model/eol/EolRun.cpp" line="159"/>
+        <location filename="../model/eol/EolRun.cpp" line="153"/>
+        <location filename="../model/eol/EolRun.cpp" line="161"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="156"/>
+        <location filename="../model/eol/EolRun.cpp" line="158"/>
         <source>%1 failed</source>
         <translation>%1 失败</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="196"/>
+        <location filename="../model/eol/EolRun.cpp" line="198"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="205"/>
+        <location filename="../model/eol/EolRun.cpp" line="207"/>
         <source>recording the result</source>
         <translation>正在记录结果</translation>
     </message>
@@ -5839,196 +6199,242 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="90"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>在下线工位设定并测试一台产品；记录结果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>产品序列号（按条码读取）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <source>Who tests it (default: the login name).</source>
-        <translation>测试人员（默认：登录名）。</translation>
+        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <source>Who tests it, on a station without users (default: the login name).</source>
+        <translation>无用户的工位上的测试者（默认：登录名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>本工位名称（默认：主机名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含单台数值的 CSV 文件，按序列号对应。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="107"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由操作员输入的单台数值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技术员许可配方规则不允许的重新测试（已合格的序列号，或测试次数已用完）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="144"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：请写成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="143"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="166"/>
+        <location filename="../cli/EolRunCommand.cpp" line="172"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允许 %3；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="168"/>
+        <location filename="../cli/EolRunCommand.cpp" line="174"/>
         <source>any %1 variant</source>
         <translation>任何 %1 机型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="177"/>
+        <location filename="../cli/EolRunCommand.cpp" line="183"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在站号 %2 没有位置；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="191"/>
+        <location filename="../cli/EolRunCommand.cpp" line="197"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="206"/>
+        <location filename="../cli/EolRunCommand.cpp" line="212"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方无效；未发送任何内容：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="237"/>
+        <location filename="../cli/EolRunCommand.cpp" line="243"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="241"/>
+        <location filename="../cli/EolRunCommand.cpp" line="247"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：单元 %1（开始于 %2）因工作站进程已结束而未完成，现已记录为“中断”。请确认其电机已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="246"/>
+        <location filename="../cli/EolRunCommand.cpp" line="252"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 条结果尚未能发送到结果数据库</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="265"/>
+        <location filename="../cli/EolRunCommand.cpp" line="278"/>
         <source>error: %1; nothing was sent</source>
         <translation>错误：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="267"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>a technician allows it with --retest</source>
         <translation>技术员可用 --retest 许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="271"/>
+        <location filename="../cli/EolRunCommand.cpp" line="284"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；按 --retest 的许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="292"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="296"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驱动器未确认停止；未进行任何检测</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="334"/>
-        <location filename="../cli/EolRunCommand.cpp" line="355"/>
+        <location filename="../cli/EolRunCommand.cpp" line="349"/>
+        <location filename="../cli/EolRunCommand.cpp" line="370"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="378"/>
+        <location filename="../cli/EolRunCommand.cpp" line="393"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="409"/>
+        <location filename="../cli/EolRunCommand.cpp" line="424"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="411"/>
+        <location filename="../cli/EolRunCommand.cpp" line="426"/>
         <source>attempt %1</source>
         <translation>第 %1 次测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="418"/>
+        <location filename="../cli/EolRunCommand.cpp" line="433"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="420"/>
+        <location filename="../cli/EolRunCommand.cpp" line="435"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
+        <location filename="../cli/EolRunCommand.cpp" line="440"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRunIdentity</name>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <source>the results database is not open</source>
+        <translation>结果数据库未打开</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <source>results database: %1; nothing was sent</source>
+        <translation>结果数据库：%1；未发送任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <source>refused: %1; nothing was sent</source>
+        <translation>拒绝：%1；未发送任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
+        <translation>此工位有用户：请用 --user NAME 指定测试者（密码取自 OPENTOP_PASSWORD 或终端）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
+        <translation>错误：有用户的工位上，操作员即登录的用户（--user）；不接受 --operator</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <source>run-units: recipe checksum %1 is not approved</source>
+        <translation>run-units：配方校验和 %1 未批准</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <source>refused: %1 Nothing was sent.</source>
+        <translation>拒绝：%1 未发送任何内容。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <source>%1 logged in; recipe approved by %2 (approval %3)</source>
+        <translation>%1 已登录；配方由 %2 批准（批准 %3）</translation>
     </message>
 </context>
 <context>
@@ -6058,83 +6464,93 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="170"/>
+        <location filename="../model/eol/EolStation.cpp" line="180"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="177"/>
         <source>opening the results database</source>
         <translation>正在打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="169"/>
+        <location filename="../model/eol/EolStation.cpp" line="179"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>无法连接（%1）；正在自动重试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="178"/>
+        <location filename="../model/eol/EolStation.cpp" line="188"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="182"/>
+        <location filename="../model/eol/EolStation.cpp" line="192"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="187"/>
+        <location filename="../model/eol/EolStation.cpp" line="197"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在打开结果数据库；请稍后再试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="206"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="198"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="218"/>
+        <source>run-units: serial %1: %2</source>
+        <translation>run-units：序列号 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="222"/>
+        <location filename="../model/eol/EolStation.cpp" line="270"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驱动器确认安全后，单元 %1 会立即开始</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="212"/>
+        <location filename="../model/eol/EolStation.cpp" line="230"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="230"/>
+        <location filename="../model/eol/EolStation.cpp" line="252"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <location filename="../model/eol/EolStation.cpp" line="272"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>工作站有驱动器不安全：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="313"/>
+        <location filename="../model/eol/EolStation.cpp" line="306"/>
+        <source>serial %1 tested again, allowed by %2: %3</source>
+        <translation>序列号 %1 重新测试,由 %2 批准:%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="342"/>
         <source>no unit was started yet</source>
         <translation>尚未开始任何产品的测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="325"/>
+        <location filename="../model/eol/EolStation.cpp" line="354"/>
         <source>cancelled before it started</source>
         <translation>开始前已取消</translation>
     </message>
@@ -6339,13 +6755,13 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="38"/>
-        <location filename="../cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="159"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="65"/>
-        <location filename="../cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="176"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -6403,7 +6819,7 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="167"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>错误：%1 处没有结果数据库（尚未记录任何内容）；请用 --db URL 指定</translation>
     </message>
@@ -6430,6 +6846,146 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1 超出该产品的范围 %2–%3 %4</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolUserCommand</name>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
+        <translation>添加用户（操作员、技术员、工程师或管理员）；第一个用户是管理员，不需要 --user</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <source>List the users of the results database</source>
+        <translation>列出结果数据库的用户</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <source>Disable a user: they can no longer log in; their records stay</source>
+        <translation>停用用户：无法再登录；其记录保留</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
+        <translation>设置用户密码（自己的需输入旧密码，管理员可设置任何人的）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <source>user add: operator, technician, engineer or administrator.</source>
+        <translation>user add：operator、technician、engineer 或 administrator。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <source>ROLE</source>
+        <translation>角色</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <source>user add: the name shown on the screen.</source>
+        <translation>user add：屏幕上显示的名称。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <source>TEXT</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="108"/>
+        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <source>error: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
+        <translation>没有用户：此工位未受管理（任何人都可运行、编辑和退出）；添加第一位管理员：opentop-cli eol user add NAME --role administrator</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>user</source>
+        <translation>用户</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>role</source>
+        <translation>角色</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>active</source>
+        <translation>启用</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>created</source>
+        <translation>创建时间</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>no (disabled)</source>
+        <translation>否（已停用）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>用法：opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <source>error: --role is one of: %1</source>
+        <translation>错误：--role 须为以下之一：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <source>Present password for %1: </source>
+        <translation>%1 的当前密码：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="191"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <source>New password for %1: </source>
+        <translation>%1 的新密码：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <source>user %1 added as %2</source>
+        <translation>已添加用户 %1，角色 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <source>user %1 disabled</source>
+        <translation>已停用用户 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <source>password of %1 changed</source>
+        <translation>已更改 %1 的密码</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <source>error: %1; nothing was changed</source>
+        <translation>错误：%1；未做任何更改</translation>
     </message>
 </context>
 <context>
@@ -7376,6 +7932,34 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
 </context>
 <context>
+    <name>opentop::IdentityDialog</name>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <source>Who is it?</source>
+        <translation>请确认身份</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
+        <translation>要%1，此工位需要%2或更高角色。请用用户名和密码登录。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <source>User name:</source>
+        <translation>用户名:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <source>Password:</source>
+        <translation>密码:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <source>Refused: %1</source>
+        <translation>已拒绝：%1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::InputFile</name>
     <message>
         <location filename="../model/files/InputFile.cpp" line="13"/>
@@ -7931,28 +8515,28 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="140"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="163"/>
+        <location filename="../ui/main/MainWindow.cpp" line="164"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在连接 %1…（仍连接着 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="202"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已连接：%1（新连接失败：%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
-        <location filename="../ui/main/MainWindow.cpp" line="219"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="220"/>
         <source>Cannot connect</source>
         <translation>无法连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7961,76 +8545,76 @@ Still connected to %2; nothing was changed.</source>
 仍连接着 %2；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="209"/>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="210"/>
+        <location filename="../ui/main/MainWindow.cpp" line="342"/>
         <source>Not connected: %1</source>
         <translation>未连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="280"/>
+        <location filename="../ui/main/MainWindow.cpp" line="281"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通信组：%1（总线 › 通信组）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="311"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="314"/>
         <source>Connection lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模拟总线（无硬件）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="321"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="347"/>
+        <location filename="../ui/main/MainWindow.cpp" line="348"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="375"/>
+        <location filename="../ui/main/MainWindow.cpp" line="376"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="412"/>
+        <location filename="../ui/main/MainWindow.cpp" line="413"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
-        <location filename="../ui/main/MainWindow.cpp" line="453"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="454"/>
         <source>quit</source>
         <translation>退出</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>Unwritten changes</source>
         <translation>未写入的修改</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
+        <location filename="../ui/main/MainWindow.cpp" line="441"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
@@ -9404,6 +9988,14 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::PasswordHash</name>
+    <message>
+        <location filename="../model/access/PasswordHash.cpp" line="52"/>
+        <source>a password needs at least %1 characters</source>
+        <translation>密码至少需要 %1 个字符</translation>
+    </message>
+</context>
+<context>
     <name>opentop::PidGains</name>
     <message>
         <location filename="../model/tuning/PidGains.cpp" line="9"/>
@@ -9465,32 +10057,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生产模式（下线检测）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>下线检测工位的操作员界面；切换回来之前不能编辑参数（Ctrl+Shift+P）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
         <source>&amp;Full screen</source>
         <translation>全屏(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
         <source>&amp;Station name…</source>
         <translation>工作站名称(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>本下线检测站记录在每个单元上的名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9499,53 +10091,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 能够记录结果之前，无法测试任何产品。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
         <source>Station name</source>
         <translation>工作站名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>本工作站记录在每个单元上的名称（同一产线的每个工作站需各有其名）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
         <source>A station needs a name.</source>
         <translation>工作站需要名称。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>正在检测单元：请在完成后再更改名称。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
         <source>Production mode</source>
         <translation>生产模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>正在测试一台产品。请先取消测试（Esc）或等待测试完成，再切换回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
         <source>Results database</source>
         <translation>结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <source>leave production mode</source>
+        <translation>退出生产模式</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
         <source>A unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="151"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>正在测试产品 %1。取消测试并%2？会先停止其电机；该产品将记录为已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -9618,77 +10215,67 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="65"/>
         <source>Open recipe…</source>
         <translation>打开配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Per-unit values…</source>
         <translation>单台数值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
-        <source>operator</source>
-        <translation>操作员</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Operator:</source>
-        <translation>操作员：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>扫描或输入序列号，然后按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="97"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="89"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消本台测试（Esc）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Now</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="189"/>
         <source>Unit %1: %2…</source>
         <translation>产品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>READY</source>
         <translation>就绪</translation>
     </message>
@@ -9707,210 +10294,215 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
+        <source>open another recipe</source>
+        <translation>打开其他配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="257"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版本 %2 — %n 台驱动器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="269"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="274"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;无：请打开该产品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工位 %1 · 结果：%2 · 单台数值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>loaded</source>
         <translation>已载入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序列号 %1 未被接受：单元 %2 正在检测中。请在其判定结果显示后再扫描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>another</source>
         <translation>另一个单元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="324"/>
         <source>Per-unit value</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驱动器 %1：%2（%3–%4 %5）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="344"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>单元 %1：先使工作站的驱动器进入安全状态…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="490"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="495"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驱动器进入安全状态：逐一读取、停止仍在运转者、将控制权交还其输入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="177"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>NOT STARTED</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="356"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="343"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>TESTING</source>
         <translation>测试中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
         <source>Unit %1 — attempt %2</source>
         <translation>产品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="392"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：结果服务器没有响应。服务器响应后会自动发送。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="405"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="419"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="424"/>
         <source>NOT RECORDED</source>
         <translation>未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="446"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 结果数据库恢复后，已于 %2 记录。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
         <source>STATION ERROR</source>
         <translation>工位错误</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="464"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="469"/>
         <source>%1
 Not a verdict on the unit: fix the cause and test it again.</source>
         <translation>%1
 这不是对产品的判定：请排除原因后重新测试。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="477"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="482"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 条结果，尚未存入结果数据库：%1。数据库响应后会按顺序自动发送。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="486"/>
         <source>it does not answer</source>
         <translation>数据库没有响应</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="484"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="489"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>单元 %1（开始于 %2）未完成：工作站在检测中停止。已记录为“中断”，请重新检测。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="385"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="455"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="390"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="447"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="460"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
 记录完成前不进行任何测试。工作站会自动重试（下次 %4）；请将此产品放在一边。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="454"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="459"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="467"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="398"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="394"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10223,6 +10815,64 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RecipeApprovals</name>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
+        <translation>配方“%1”版本 %2 是草稿：此版本（其校验和）未经批准，因此不会运行。请工程师批准（配方编辑器中的“批准…”，或 opentop-cli eol recipe approve FILE --user NAME）。</translation>
+    </message>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <source>a recipe without a checksum cannot be approved: sign it first</source>
+        <translation>没有校验和的配方无法批准：请先签名</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeApproveButton</name>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <source>Approve…</source>
+        <translation>批准…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
+        <translation>批准已保存的配方供产线使用（工程师）：有用户的工位只运行已批准的配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <source>Approve recipe</source>
+        <translation>批准配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
+        <translation>请先保存配方：批准的是已保存文件的校验和。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <source>%1 cannot be approved: %2</source>
+        <translation>%1 无法批准：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
+        <translation>此工位没有用户：批准须记录批准人。请用 opentop-cli eol user add 设置用户。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <source>approve %1 rev. %2</source>
+        <translation>批准 %1 版本 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <source>%1 rev. %2 is approved by %3: stations run it.</source>
+        <translation>%1 版本 %2 已由 %3 批准：工位可运行。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeBuilder</name>
     <message>
         <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
@@ -10420,7 +11070,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>Revision:</source>
         <translation>版本：</translation>
     </message>
@@ -10465,167 +11115,167 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>另存为…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>从标准样机在总线上的驱动器或其备份文件生成配方，或打开已有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>配方为空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通过检查：可以保存和运行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 个问题：修正之前无法保存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通过检查（%n 个问题）；未保存任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>已打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已打开 %1，但它无法按原样载入（%2）。保存时会进行检查并重新签名。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="323"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从 %1 新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>站号 %1 不是总线上的已知驱动器；请先扫描总线</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在读取标准样机的设定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="355"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未生成配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="394"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="395"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>New recipe</source>
         <translation>新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Product name:</source>
         <translation>产品名称：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>标准样机的备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="418"/>
         <source>Backups (*.json)</source>
         <translation>备份 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="430"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>总线上没有驱动器：请先连接并扫描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="438"/>
         <source>New recipe from drives</source>
         <translation>从驱动器新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="439"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>标准样机各驱动器的站号（已找到：%1）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="449"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是站号（1–247）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从总线上的驱动器新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Save recipe</source>
         <translation>保存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="476"/>
         <source>Saved and signed: %1</source>
         <translation>已保存并签名：%1</translation>
     </message>
@@ -12240,7 +12890,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="202"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="207"/>
         <source>no unit record %1</source>
         <translation>没有产品记录 %1</translation>
     </message>
@@ -12248,12 +12898,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="206"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="242"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>结果数据库的架构版本为 %1，比本程序所知的（%2）更新：请更新本工位的 OpenTOP；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="241"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="277"/>
         <source>the migration left a record pointing at no unit (table %1)</source>
         <translation>迁移后留下了不指向任何产品的记录（表 %1）</translation>
     </message>
@@ -12303,22 +12953,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>产品需要序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="190"/>
+        <location filename="../model/eol/ResultStore.cpp" line="205"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>产品只能以 pass、fail、error 或 aborted 结束，而不是 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="220"/>
+        <location filename="../model/eol/ResultStore.cpp" line="235"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>产品 %1（序列号 %2）从未在结果数据库中开始测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="222"/>
+        <location filename="../model/eol/ResultStore.cpp" line="237"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>产品 %1（序列号 %2）已记录为 %3；保留其记录</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="244"/>
+        <location filename="../model/eol/ResultStore.cpp" line="259"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>产品 %1（序列号 %2）在结果数据库中不处于进行中：从未开始，或已完成，或已标记为中断</translation>
     </message>
@@ -14495,46 +15145,95 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
 </context>
 <context>
+    <name>opentop::StationAccess</name>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="74"/>
+        <location filename="../model/access/StationAccess.cpp" line="127"/>
+        <source>the results database is not open</source>
+        <translation>结果数据库未打开</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="105"/>
+        <source>the results database is not open, so nobody can be identified</source>
+        <translation>结果数据库未打开，因此无法确认任何人的身份</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="160"/>
+        <source>the station&apos;s users are being read from the results database</source>
+        <translation>正在从结果数据库读取工位用户</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="161"/>
+        <source>the station&apos;s users cannot be read: %1</source>
+        <translation>无法读取工位用户：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="166"/>
+        <source>nobody is logged in: log in with your user name and password (or badge)</source>
+        <translation>无人登录：请用用户名和密码（或工牌）登录</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="170"/>
+        <source>the recipe&apos;s approval is being read from the results database</source>
+        <translation>正在从结果数据库读取配方批准</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="19"/>
+        <location filename="../ui/eol/StationActions.cpp" line="22"/>
         <source>Reset alarm and test again</source>
         <translation>复位报警并重新测试</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="20"/>
+        <location filename="../ui/eol/StationActions.cpp" line="23"/>
         <source>Technician: test again…</source>
         <translation>技术员：重新测试…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="50"/>
+        <location filename="../ui/eol/StationActions.cpp" line="53"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>正在复位站号 %1 的报警…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="59"/>
+        <location filename="../ui/eol/StationActions.cpp" line="62"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>报警未清除；未开始任何测试：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="84"/>
+        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <source>reset the alarm</source>
+        <translation>报警复位</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <source>serial %1</source>
+        <translation>序列号 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <source>test serial %1 again</source>
+        <translation>重新测试序列号 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="101"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>测试前站号 %1 上已有报警：未写入任何内容。请复位报警（使用驱动器自身的复位功能；需要重新上电的报警会另行提示），产品随即重新测试。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="97"/>
+        <location filename="../ui/eol/StationActions.cpp" line="130"/>
         <source>(no name)</source>
         <translation>（未填姓名）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="99"/>
+        <location filename="../ui/eol/StationActions.cpp" line="132"/>
         <source>Test again</source>
         <translation>重新测试</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="100"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -14587,6 +15286,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationFigures.cpp" line="35"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>本工位、此配方版本，自 %1 起（读取于 %2）。用命令查看相同数据：%3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationLogin</name>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <source>Operator:</source>
+        <translation>操作员:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <source>user name</source>
+        <translation>用户名</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <source>password</source>
+        <translation>密码</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <source>Log in</source>
+        <translation>登录</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <source>Log in:</source>
+        <translation>登录:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <source>Log out</source>
+        <translation>注销</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <source>Not logged in: %1</source>
+        <translation>未登录：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
+        <translation>已登录：&lt;b&gt;%1&lt;/b&gt;（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
+        <translation>尚未设置用户：任何人都可运行、编辑和退出；请用 opentop-cli eol user add 设置用户</translation>
     </message>
 </context>
 <context>
@@ -17136,32 +17888,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="113"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>不是产品记录（format 不是 &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="118"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>本程序不认识产品记录版本 %1（最高可读取 %2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="123"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="125"/>
         <source>the unit record has no serial number</source>
         <translation>产品记录没有序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="135"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="139"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>未知的产品状态 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="149"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="153"/>
         <source>unknown variant source &quot;%1&quot;</source>
         <translation>未知的机型来源“%1”</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="188"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
     </message>
@@ -17290,6 +18042,14 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;程序的完整说明：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UserStore</name>
+    <message>
+        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
+        <translation>用户名为 1 至 64 个字母、数字或 . _ @ -（不能有空格）：“%1”</translation>
     </message>
 </context>
 <context>

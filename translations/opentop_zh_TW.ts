@@ -474,6 +474,176 @@
     </message>
 </context>
 <context>
+    <name>opentop::AccessCheck</name>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="27"/>
+        <source>%1 (%2) may not %3: it needs the %4 role or higher</source>
+        <translation>%1（%2）不可%3：需要%4或更高角色</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="39"/>
+        <location filename="../model/access/AccessCheck.cpp" line="49"/>
+        <location filename="../model/access/AccessCheck.cpp" line="122"/>
+        <source>the users cannot be read from the results database: %1</source>
+        <translation>無法從結果資料庫讀取使用者：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="54"/>
+        <source>wrong user name or password</source>
+        <translation>使用者名稱或密碼錯誤</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="56"/>
+        <source>user &quot;%1&quot;: wrong user name or password</source>
+        <translation>使用者「%1」：使用者名稱或密碼錯誤</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="60"/>
+        <source>user %1 is disabled</source>
+        <translation>使用者 %1 已停用</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="98"/>
+        <source>logged in as %1</source>
+        <translation>以%1身分登入</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="123"/>
+        <source>user %1 is not an active user</source>
+        <translation>使用者 %1 不是啟用中的使用者</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="136"/>
+        <source>recipe %1 rev. %2, checksum %3</source>
+        <translation>配方 %1 版次 %2，校驗碼 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="142"/>
+        <source>this station has no users yet: an approval names its approver, so add users first (opentop-cli eol user add)</source>
+        <translation>此工站尚無使用者：核准須記名核准人，請先新增使用者（opentop-cli eol user add）</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="151"/>
+        <source>the approval was not recorded: %1</source>
+        <translation>核准未被記錄：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="155"/>
+        <source>%1; approval %2</source>
+        <translation>%1；核准 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="184"/>
+        <source>the first user must be an administrator (--role administrator): they add everyone else</source>
+        <translation>第一位使用者必須是管理員（--role administrator）：由其新增其他所有人</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="189"/>
+        <source>add user %1</source>
+        <translation>新增使用者 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="196"/>
+        <source>user %1 exists already</source>
+        <translation>使用者 %1 已存在</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="202"/>
+        <source>user %1 (%2) added as %3</source>
+        <translation>已新增使用者 %1（%2），角色 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>enable user %1</source>
+        <translation>啟用使用者 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="214"/>
+        <source>disable user %1</source>
+        <translation>停用使用者 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="216"/>
+        <location filename="../model/access/AccessCheck.cpp" line="256"/>
+        <source>there are no users yet</source>
+        <translation>尚無任何使用者</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="223"/>
+        <location filename="../model/access/AccessCheck.cpp" line="262"/>
+        <source>no user %1</source>
+        <translation>沒有使用者 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="228"/>
+        <source>%1 is the last active administrator: add another first</source>
+        <translation>%1 是最後一位啟用中的管理員：請先新增另一位</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessCheck.cpp" line="254"/>
+        <source>set the password of %1</source>
+        <translation>設定 %1 的密碼</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::AccessPolicy</name>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="76"/>
+        <source>operator</source>
+        <translation>作業員</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="78"/>
+        <source>technician</source>
+        <translation>技術員</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="80"/>
+        <source>engineer</source>
+        <translation>工程師</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="84"/>
+        <source>administrator</source>
+        <translation>管理員</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="96"/>
+        <source>test units</source>
+        <translation>測試產品</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="98"/>
+        <source>reset an alarm and retry</source>
+        <translation>重置警報並重試</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="100"/>
+        <source>override a retest limit</source>
+        <translation>解除重測次數上限</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="102"/>
+        <source>leave production mode</source>
+        <translation>離開生產模式</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="104"/>
+        <source>open or edit a recipe</source>
+        <translation>開啟或編輯配方</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="106"/>
+        <source>approve a recipe</source>
+        <translation>核准配方</translation>
+    </message>
+    <message>
+        <location filename="../model/access/AccessPolicy.cpp" line="110"/>
+        <source>manage users</source>
+        <translation>管理使用者</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AddressSwitches</name>
     <message>
         <location filename="../model/profile/AddressSwitches.cpp" line="66"/>
@@ -2391,7 +2561,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
@@ -2432,7 +2602,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
@@ -2448,234 +2618,249 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <source>Recipe approved by</source>
+        <translation>配方核准人</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <source>not approved (station without users)</source>
+        <translation>未核准（工站無使用者）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <source>%1 (approval %2)</source>
+        <translation>%1（核准 %2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Attempt</source>
         <translation>測試次數</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>第 %1 次（此序號在此配方下的測試）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>未計次（記錄時尚未統計測試次數）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
         <source>Ended</source>
         <translation>結束時間</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>Record</source>
         <translation>記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="96"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
         <source>First failure:</source>
         <translation>首個不合格項目：</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>此序號先前有 %n 次測試不合格，列於下方。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
         <source>Drives</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Variant</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="118"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>How known</source>
         <translation>如何得知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="123"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
         <source>Written</source>
         <translation>寫入值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Read back</source>
         <translation>回讀值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="127"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>Verified</source>
         <translation>已驗證</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>already set</source>
         <translation>原已設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="131"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
         <source>Measurements</source>
         <translation>量測值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Step</source>
         <translation>步驟</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Quantity</source>
         <translation>量測項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
         <source>Earlier tests of this serial</source>
         <translation>此序號先前的測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="154"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後的匯流排通訊</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="169"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
         <source>read from the drive</source>
         <translation>從驅動器讀取</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="171"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
         <source>proven by the variant probe</source>
         <translation>由機型探測證實</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="173"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>confirmed by a person</source>
         <translation>由人員確認</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="175"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>ASSUMED, not proven</source>
         <translation>推定，未證實</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="179"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="185"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
         <source>not known</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="187"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
         <source>%1 (assumed)</source>
         <translation>%1（推定）</translation>
     </message>
@@ -2832,6 +3017,44 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <location filename="../cli/CliContext.cpp" line="326"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::CliIdentity</name>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
+        <translation>執行者（結果資料庫的使用者）；密碼取自 OPENTOP_PASSWORD，否則在終端機上詢問。</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <source>NAME</source>
+        <translation>名稱</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <source>error: no password: set %1 or run on a terminal</source>
+        <translation>錯誤：沒有密碼：請設定 %1 或在終端機上執行</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <source>Again: </source>
+        <translation>再輸入一次：</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <source>error: the passwords differ; nothing was changed</source>
+        <translation>錯誤：兩次密碼不同；未做任何變更</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <source>error: name who does it with --user NAME</source>
+        <translation>錯誤：請以 --user NAME 指定執行者</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <source>Password for %1: </source>
+        <translation>%1 的密碼：</translation>
     </message>
 </context>
 <context>
@@ -4783,6 +5006,95 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
+    <name>opentop::EolAuditCommand</name>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
+        <translation>顯示稽核紀錄：誰登入、核准、使用或被拒絕某項權限</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>結果資料庫：SQLite 檔案或 postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
+        <translation>audit：T 當時或之後（2026-11-24、8h、2d、today）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <source>audit: only this user.</source>
+        <translation>audit：僅此使用者。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>NAME</source>
+        <translation>名稱</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <source>audit: only this station.</source>
+        <translation>audit：僅此工站。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>用法：opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <source>error: --since: %1</source>
+        <translation>錯誤：--since：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <source>error: %1</source>
+        <translation>錯誤：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <source>no audit entry matches</source>
+        <translation>沒有符合的稽核紀錄</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>station</source>
+        <translation>工站</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>user</source>
+        <translation>使用者</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>action</source>
+        <translation>動作</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <source>detail</source>
+        <translation>內容</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolCertificateCommand</name>
     <message>
         <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
@@ -5028,14 +5340,57 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="34"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
         <source>&amp;Recipe editor…</source>
         <translation>配方編輯器(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <source>the recipe editor</source>
+        <translation>配方編輯器</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
         <source>Re&amp;sults…</source>
         <translation>結果(&amp;S)…</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRecipeApproveCommand</name>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
+        <translation>核准已簽署的配方供產線使用（工程師）：之後工站即可執行</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>結果資料庫：SQLite 檔案或 postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>用法：opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <source>%1: the recipe is not valid, so it cannot be approved:</source>
+        <translation>%1：配方無效，因此無法核准：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <source>error: %1; the recipe was not approved</source>
+        <translation>錯誤：%1；配方未核准</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
+        <translation>%1 版次 %2 已由 %3 核准（核准 %4，校驗碼 %5）</translation>
     </message>
 </context>
 <context>
@@ -5636,6 +5991,11 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
     <message>
         <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <source>approved by</source>
+        <translation>核准人</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
@@ -5780,58 +6140,58 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRun</name>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="57"/>
+        <location filename="../model/eol/EolRun.cpp" line="59"/>
         <source>recording the unit before anything is sent</source>
         <translation>傳送任何內容前正在記錄產品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="63"/>
+        <location filename="../model/eol/EolRun.cpp" line="65"/>
         <source>the results database cannot record the unit: %1</source>
         <translation>結果資料庫無法記錄此產品：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="96"/>
+        <location filename="../model/eol/EolRun.cpp" line="98"/>
         <source>the recipe has no drives</source>
         <translation>配方中沒有驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="109"/>
+        <location filename="../model/eol/EolRun.cpp" line="111"/>
         <source>the recipe is not valid: %1</source>
         <translation>配方無效：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="114"/>
+        <location filename="../model/eol/EolRun.cpp" line="116"/>
         <source>%1: no value for %2 for this unit</source>
         <translation>%1：此產品沒有 %2 的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="132"/>
+        <location filename="../model/eol/EolRun.cpp" line="134"/>
         <source>cancelled by the operator</source>
         <translation>已由作業員取消</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="143"/>
+        <location filename="../model/eol/EolRun.cpp" line="145"/>
         <source>the connection was lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="151"/>
-        <location filename="../model/eol/EolRun.cpp" line="159"/>
+        <location filename="../model/eol/EolRun.cpp" line="153"/>
+        <location filename="../model/eol/EolRun.cpp" line="161"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="156"/>
+        <location filename="../model/eol/EolRun.cpp" line="158"/>
         <source>%1 failed</source>
         <translation>%1 失敗</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="196"/>
+        <location filename="../model/eol/EolRun.cpp" line="198"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolRun.cpp" line="205"/>
+        <location filename="../model/eol/EolRun.cpp" line="207"/>
         <source>recording the result</source>
         <translation>正在記錄結果</translation>
     </message>
@@ -5839,196 +6199,242 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="90"/>
+        <location filename="../cli/EolRunCommand.cpp" line="94"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="96"/>
+        <location filename="../cli/EolRunCommand.cpp" line="100"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <source>Who tests it (default: the login name).</source>
-        <translation>測試人員 (預設：登入名稱)。</translation>
+        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <source>Who tests it, on a station without users (default: the login name).</source>
+        <translation>無使用者的工站上的測試者（預設：登入名稱）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="97"/>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="98"/>
+        <location filename="../cli/EolRunCommand.cpp" line="104"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="99"/>
+        <location filename="../cli/EolRunCommand.cpp" line="105"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="106"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="107"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技術員許可配方規則不允許的重新測試 (已合格的序號，或測試次數已用完)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="144"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="143"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="166"/>
+        <location filename="../cli/EolRunCommand.cpp" line="172"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允許 %3；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="168"/>
+        <location filename="../cli/EolRunCommand.cpp" line="174"/>
         <source>any %1 variant</source>
         <translation>任何 %1 機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="177"/>
+        <location filename="../cli/EolRunCommand.cpp" line="183"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在機號 %2 沒有位置；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="191"/>
+        <location filename="../cli/EolRunCommand.cpp" line="197"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="206"/>
+        <location filename="../cli/EolRunCommand.cpp" line="212"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="237"/>
+        <location filename="../cli/EolRunCommand.cpp" line="243"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="241"/>
+        <location filename="../cli/EolRunCommand.cpp" line="247"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：單元 %1（開始於 %2）因工作站程序已結束而未完成，現已記錄為「中斷」。請確認其馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="246"/>
+        <location filename="../cli/EolRunCommand.cpp" line="252"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 筆結果尚未能送到結果資料庫</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="265"/>
+        <location filename="../cli/EolRunCommand.cpp" line="278"/>
         <source>error: %1; nothing was sent</source>
         <translation>錯誤：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="267"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>a technician allows it with --retest</source>
         <translation>技術員可使用 --retest 許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="271"/>
+        <location filename="../cli/EolRunCommand.cpp" line="284"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；依 --retest 的許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="273"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="292"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="296"/>
+        <location filename="../cli/EolRunCommand.cpp" line="309"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驅動器未確認停止；未進行任何檢測</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="334"/>
-        <location filename="../cli/EolRunCommand.cpp" line="355"/>
+        <location filename="../cli/EolRunCommand.cpp" line="349"/>
+        <location filename="../cli/EolRunCommand.cpp" line="370"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="360"/>
+        <location filename="../cli/EolRunCommand.cpp" line="375"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="378"/>
+        <location filename="../cli/EolRunCommand.cpp" line="393"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="409"/>
+        <location filename="../cli/EolRunCommand.cpp" line="424"/>
         <source>rev. %1</source>
         <translation>版次 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="411"/>
+        <location filename="../cli/EolRunCommand.cpp" line="426"/>
         <source>attempt %1</source>
         <translation>第 %1 次測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="418"/>
+        <location filename="../cli/EolRunCommand.cpp" line="433"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果「未」記錄：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="420"/>
+        <location filename="../cli/EolRunCommand.cpp" line="435"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果資料庫沒有回應：結果已保存在本工作站（%1），下次工作站程式連上資料庫時會送出</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
+        <location filename="../cli/EolRunCommand.cpp" line="440"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未確認馬達已停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolRunIdentity</name>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <source>results database: %1; nothing was sent</source>
+        <translation>結果資料庫：%1；未送出任何資料</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <source>refused: %1; nothing was sent</source>
+        <translation>拒絕：%1；未傳送任何內容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
+        <translation>此工站有使用者：請以 --user NAME 指定測試者（密碼取自 OPENTOP_PASSWORD 或終端機）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
+        <translation>錯誤：有使用者的工站上，作業員即登入的使用者（--user）；不接受 --operator</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <source>run-units: recipe checksum %1 is not approved</source>
+        <translation>run-units：配方校驗碼 %1 未核准</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <source>refused: %1 Nothing was sent.</source>
+        <translation>拒絕：%1 未傳送任何內容。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <source>%1 logged in; recipe approved by %2 (approval %3)</source>
+        <translation>%1 已登入；配方由 %2 核准（核准 %3）</translation>
     </message>
 </context>
 <context>
@@ -6058,83 +6464,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="170"/>
+        <location filename="../model/eol/EolStation.cpp" line="180"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="167"/>
+        <location filename="../model/eol/EolStation.cpp" line="177"/>
         <source>opening the results database</source>
         <translation>正在開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="169"/>
+        <location filename="../model/eol/EolStation.cpp" line="179"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>無法連線（%1）；自動重試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="178"/>
+        <location filename="../model/eol/EolStation.cpp" line="188"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="182"/>
+        <location filename="../model/eol/EolStation.cpp" line="192"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="187"/>
+        <location filename="../model/eol/EolStation.cpp" line="197"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="194"/>
+        <location filename="../model/eol/EolStation.cpp" line="204"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在開啟結果資料庫；請稍後再試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="196"/>
+        <location filename="../model/eol/EolStation.cpp" line="206"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="198"/>
+        <location filename="../model/eol/EolStation.cpp" line="208"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
-        <location filename="../model/eol/EolStation.cpp" line="248"/>
+        <location filename="../model/eol/EolStation.cpp" line="218"/>
+        <source>run-units: serial %1: %2</source>
+        <translation>run-units：序號 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="222"/>
+        <location filename="../model/eol/EolStation.cpp" line="270"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/eol/EolStation.cpp" line="226"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驅動器確認安全後，單元 %1 會立即開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="212"/>
+        <location filename="../model/eol/EolStation.cpp" line="230"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="230"/>
+        <location filename="../model/eol/EolStation.cpp" line="252"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="250"/>
+        <location filename="../model/eol/EolStation.cpp" line="272"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>工作站有驅動器不安全：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="313"/>
+        <location filename="../model/eol/EolStation.cpp" line="306"/>
+        <source>serial %1 tested again, allowed by %2: %3</source>
+        <translation>序號 %1 重新測試,由 %2 核准:%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolStation.cpp" line="342"/>
         <source>no unit was started yet</source>
         <translation>尚未開始任何產品的測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="325"/>
+        <location filename="../model/eol/EolStation.cpp" line="354"/>
         <source>cancelled before it started</source>
         <translation>開始前已取消</translation>
     </message>
@@ -6339,13 +6755,13 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="38"/>
-        <location filename="../cli/EolSupport.cpp" line="158"/>
+        <location filename="../cli/EolSupport.cpp" line="159"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
         <location filename="../cli/EolSupport.cpp" line="65"/>
-        <location filename="../cli/EolSupport.cpp" line="173"/>
+        <location filename="../cli/EolSupport.cpp" line="176"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -6403,7 +6819,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="164"/>
+        <location filename="../cli/EolSupport.cpp" line="167"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>錯誤：%1 沒有結果資料庫 (尚未記錄任何資料)；請以 --db URL 指定</translation>
     </message>
@@ -6430,6 +6846,146 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../model/eol/EolTarget.cpp" line="54"/>
         <source>%1 is outside this product&apos;s range %2–%3 %4</source>
         <translation>%1 超出此產品的範圍 %2–%3 %4</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolUserCommand</name>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
+        <translation>新增使用者（作業員、技術員、工程師或管理員）；第一位使用者是管理員，不需要 --user</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <source>List the users of the results database</source>
+        <translation>列出結果資料庫的使用者</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <source>Disable a user: they can no longer log in; their records stay</source>
+        <translation>停用使用者：無法再登入；其紀錄保留</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
+        <translation>設定使用者密碼（自己的需輸入舊密碼，管理員可設定任何人的）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>Results database: an SQLite file or postgresql://user@host/db.</source>
+        <translation>結果資料庫：SQLite 檔案或 postgresql://user@host/db。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <source>user add: operator, technician, engineer or administrator.</source>
+        <translation>user add：operator、technician、engineer 或 administrator。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <source>ROLE</source>
+        <translation>角色</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <source>user add: the name shown on the screen.</source>
+        <translation>user add：畫面上顯示的名稱。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <source>TEXT</source>
+        <translation>文字</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="108"/>
+        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <source>error: %1</source>
+        <translation>錯誤：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
+        <translation>沒有使用者：此工站未受管理（任何人都可執行、編輯和離開）；新增第一位管理員：opentop-cli eol user add NAME --role administrator</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>user</source>
+        <translation>使用者</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>name</source>
+        <translation>名稱</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>role</source>
+        <translation>角色</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>active</source>
+        <translation>啟用</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <source>created</source>
+        <translation>建立時間</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <source>no (disabled)</source>
+        <translation>否（已停用）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <source>usage: opentop-cli eol %1</source>
+        <translation>用法：opentop-cli eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <source>error: --role is one of: %1</source>
+        <translation>錯誤：--role 須為下列之一：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <source>Present password for %1: </source>
+        <translation>%1 的目前密碼：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="191"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <source>New password for %1: </source>
+        <translation>%1 的新密碼：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <source>user %1 added as %2</source>
+        <translation>已新增使用者 %1，角色 %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <source>user %1 disabled</source>
+        <translation>已停用使用者 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <source>password of %1 changed</source>
+        <translation>已變更 %1 的密碼</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <source>error: %1; nothing was changed</source>
+        <translation>錯誤：%1；未做任何變更</translation>
     </message>
 </context>
 <context>
@@ -7376,6 +7932,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::IdentityDialog</name>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <source>Who is it?</source>
+        <translation>請確認身分</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
+        <translation>要%1，此工站需要%2或更高角色。請以使用者名稱和密碼登入。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <source>User name:</source>
+        <translation>使用者名稱:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <source>Password:</source>
+        <translation>密碼:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <source>Refused: %1</source>
+        <translation>已拒絕：%1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::InputFile</name>
     <message>
         <location filename="../model/files/InputFile.cpp" line="13"/>
@@ -7931,28 +8515,28 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="140"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="163"/>
+        <location filename="../ui/main/MainWindow.cpp" line="164"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在連線至 %1… (仍連線於 %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="202"/>
+        <location filename="../ui/main/MainWindow.cpp" line="203"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已連線：%1 (新連線失敗：%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="205"/>
-        <location filename="../ui/main/MainWindow.cpp" line="219"/>
+        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="220"/>
         <source>Cannot connect</source>
         <translation>無法連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
+        <location filename="../ui/main/MainWindow.cpp" line="207"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -7961,76 +8545,76 @@ Still connected to %2; nothing was changed.</source>
 仍連線於 %2；未做任何變更。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="209"/>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="210"/>
+        <location filename="../ui/main/MainWindow.cpp" line="342"/>
         <source>Not connected: %1</source>
         <translation>未連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="280"/>
+        <location filename="../ui/main/MainWindow.cpp" line="281"/>
         <source>Communication groups: %1 (Bus › Communication groups)</source>
         <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="311"/>
-        <location filename="../ui/main/MainWindow.cpp" line="313"/>
+        <location filename="../ui/main/MainWindow.cpp" line="312"/>
+        <location filename="../ui/main/MainWindow.cpp" line="314"/>
         <source>Connection lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="318"/>
+        <location filename="../ui/main/MainWindow.cpp" line="319"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模擬匯流排 (無實體硬體) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="320"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="321"/>
         <source>Connecting to %1…</source>
         <translation>正在連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="340"/>
+        <location filename="../ui/main/MainWindow.cpp" line="341"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="347"/>
+        <location filename="../ui/main/MainWindow.cpp" line="348"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="375"/>
+        <location filename="../ui/main/MainWindow.cpp" line="376"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="405"/>
-        <location filename="../ui/main/MainWindow.cpp" line="415"/>
+        <location filename="../ui/main/MainWindow.cpp" line="406"/>
+        <location filename="../ui/main/MainWindow.cpp" line="416"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="412"/>
+        <location filename="../ui/main/MainWindow.cpp" line="413"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="428"/>
-        <location filename="../ui/main/MainWindow.cpp" line="453"/>
+        <location filename="../ui/main/MainWindow.cpp" line="429"/>
+        <location filename="../ui/main/MainWindow.cpp" line="454"/>
         <source>quit</source>
         <translation>結束</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="439"/>
+        <location filename="../ui/main/MainWindow.cpp" line="440"/>
         <source>Unwritten changes</source>
         <translation>未寫入的變更</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
+        <location filename="../ui/main/MainWindow.cpp" line="441"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
@@ -9404,6 +9988,14 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::PasswordHash</name>
+    <message>
+        <location filename="../model/access/PasswordHash.cpp" line="52"/>
+        <source>a password needs at least %1 characters</source>
+        <translation>密碼至少需要 %1 個字元</translation>
+    </message>
+</context>
+<context>
     <name>opentop::PidGains</name>
     <message>
         <location filename="../model/tuning/PidGains.cpp" line="9"/>
@@ -9465,32 +10057,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="35"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生產模式 (終檢)(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="38"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>終檢工站的作業員畫面；切換回來之前無法編輯參數 (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="41"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
         <source>&amp;Full screen</source>
         <translation>全螢幕(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="50"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
         <source>&amp;Station name…</source>
         <translation>工作站名稱(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="51"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>本出廠檢測站記錄在每個單元上的名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -9499,53 +10091,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 可記錄結果之前，無法測試任何產品。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="78"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="86"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
         <source>Station name</source>
         <translation>工作站名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="79"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>本工作站記錄在每個單元上的名稱（同一產線的每個工作站需各有其名）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
         <source>A station needs a name.</source>
         <translation>工作站需要名稱。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>正在檢測單元：請在完成後再變更名稱。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="105"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
         <source>Production mode</source>
         <translation>生產模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="106"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>有產品正在測試中。請先取消 (Esc) 或等待測試完成，再切換回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="59"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
         <source>Results database</source>
         <translation>結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="150"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <source>leave production mode</source>
+        <translation>離開生產模式</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
         <source>A unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="151"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>產品 %1 正在測試中。要取消測試並%2嗎？會先停止其馬達，並將此產品記錄為已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -9618,77 +10215,67 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="70"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="65"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="71"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="82"/>
-        <source>operator</source>
-        <translation>作業員</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="85"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Operator:</source>
-        <translation>作業員：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="96"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="97"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="89"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="122"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="129"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="193"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="189"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>READY</source>
         <translation>就緒</translation>
     </message>
@@ -9707,210 +10294,215 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
+        <source>open another recipe</source>
+        <translation>開啟其他配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="245"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="252"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="257"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="253"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="269"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="274"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="303"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序號 %1 未被接受：單元 %2 正在檢測中。請在其判定結果顯示後再掃描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
         <source>another</source>
         <translation>另一個單元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="319"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="324"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="339"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="344"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>單元 %1：先使工作站的驅動器進入安全狀態…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="490"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="495"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驅動器進入安全狀態：逐一讀取、停止仍在運轉者、將控制權交還其輸入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="177"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="184"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="333"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="180"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>NOT STARTED</source>
         <translation>未開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="356"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="357"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="343"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
         <source>TESTING</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
         <source>Unit %1 — attempt %2</source>
         <translation>產品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="387"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="392"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="400"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="405"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="419"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="424"/>
         <source>NOT RECORDED</source>
         <translation>未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="441"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="446"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
         <source>STATION ERROR</source>
         <translation>工站錯誤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="464"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="469"/>
         <source>%1
 Not a verdict on the unit: fix the cause and test it again.</source>
         <translation>%1
 此結果並非產品判定：請排除原因後重新測試。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="477"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="482"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="486"/>
         <source>it does not answer</source>
         <translation>資料庫沒有回應</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="484"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="489"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="385"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="442"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="455"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="390"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="447"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="460"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="420"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="454"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="459"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="458"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="467"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="398"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="394"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10223,6 +10815,64 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RecipeApprovals</name>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
+        <translation>配方「%1」版次 %2 是草稿：此版本（其校驗碼）未經核准，因此不會執行。請工程師核准（配方編輯器中的「核准…」，或 opentop-cli eol recipe approve FILE --user NAME）。</translation>
+    </message>
+    <message>
+        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <source>a recipe without a checksum cannot be approved: sign it first</source>
+        <translation>沒有校驗碼的配方無法核准：請先簽署</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeApproveButton</name>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <source>Approve…</source>
+        <translation>核准…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
+        <translation>核准已儲存的配方供產線使用（工程師）：有使用者的工站只執行已核准的配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <source>Approve recipe</source>
+        <translation>核准配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
+        <translation>請先儲存配方：核准的是已儲存檔案的校驗碼。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <source>%1 cannot be approved: %2</source>
+        <translation>%1 無法核准：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
+        <translation>此工站沒有使用者：核准須記名核准人。請以 opentop-cli eol user add 設定使用者。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <source>approve %1 rev. %2</source>
+        <translation>核准 %1 版次 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <source>%1 rev. %2 is approved by %3: stations run it.</source>
+        <translation>%1 版次 %2 已由 %3 核准：工站可執行。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeBuilder</name>
     <message>
         <location filename="../model/eol/RecipeBuilder.cpp" line="208"/>
@@ -10420,7 +11070,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>Revision:</source>
         <translation>版次：</translation>
     </message>
@@ -10465,167 +11115,167 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>另存新檔…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="154"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="157"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="228"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>由標準樣品在匯流排上的驅動器或其備份檔建立配方，或開啟既有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="232"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>配方為空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="243"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="247"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通過檢查：可儲存並執行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="250"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 個問題：修正之前無法儲存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="262"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通過檢查 (%n 個問題)；未儲存任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="278"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="290"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="297"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="298"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已開啟 %1，但無法直接載入 (%2)。儲存時會檢查並重新簽署。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="318"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="323"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由 %1 建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="330"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>機號 %1 不是匯流排上已知的驅動器；請先掃描匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在讀取標準樣品的設定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="350"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="355"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未建立配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="376"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="389"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="394"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="390"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="395"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
         <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
         <source>New recipe</source>
         <translation>新配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="399"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Product name:</source>
         <translation>產品名稱：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="412"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>標準樣品的備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="413"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="418"/>
         <source>Backups (*.json)</source>
         <translation>備份檔 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="430"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>匯流排上沒有驅動器：請先連線並掃描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="433"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="438"/>
         <source>New recipe from drives</source>
         <translation>從驅動器新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="434"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="439"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>標準樣品驅動器的機號 (已找到：%1)：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="444"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="449"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是機號 (1–247)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="453"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>由匯流排上的驅動器建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="464"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
         <source>Save recipe</source>
         <translation>儲存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="466"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="476"/>
         <source>Saved and signed: %1</source>
         <translation>已儲存並簽署：%1</translation>
     </message>
@@ -12240,7 +12890,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultQueries</name>
     <message>
-        <location filename="../model/eol/ResultQueries.cpp" line="202"/>
+        <location filename="../model/eol/ResultQueries.cpp" line="207"/>
         <source>no unit record %1</source>
         <translation>沒有產品記錄 %1</translation>
     </message>
@@ -12248,12 +12898,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultSchema</name>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="206"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="242"/>
         <source>the results database has schema version %1, newer than this program knows (%2): update OpenTOP on this station; nothing was written</source>
         <translation>結果資料庫的結構版本為 %1，比本程式支援的版本 (%2) 還新：請更新此工站的 OpenTOP；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultSchema.cpp" line="241"/>
+        <location filename="../model/eol/ResultSchema.cpp" line="277"/>
         <source>the migration left a record pointing at no unit (table %1)</source>
         <translation>資料庫結構遷移後留下未對應任何產品的記錄 (資料表 %1)</translation>
     </message>
@@ -12303,22 +12953,22 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>產品需要序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="190"/>
+        <location filename="../model/eol/ResultStore.cpp" line="205"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>產品只能以 pass、fail、error 或 aborted 結束，而非 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="220"/>
+        <location filename="../model/eol/ResultStore.cpp" line="235"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>產品 %1 (序號 %2) 從未在結果資料庫中開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="222"/>
+        <location filename="../model/eol/ResultStore.cpp" line="237"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>產品 %1 (序號 %2) 已記錄為 %3；保留其記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="244"/>
+        <location filename="../model/eol/ResultStore.cpp" line="259"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>產品 %1 (序號 %2) 在結果資料庫中並非測試中：從未開始，或已完成或已標記為中斷</translation>
     </message>
@@ -14495,46 +15145,95 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
     </message>
 </context>
 <context>
+    <name>opentop::StationAccess</name>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="74"/>
+        <location filename="../model/access/StationAccess.cpp" line="127"/>
+        <source>the results database is not open</source>
+        <translation>結果資料庫未開啟</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="105"/>
+        <source>the results database is not open, so nobody can be identified</source>
+        <translation>結果資料庫未開啟，因此無法確認任何人的身分</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="160"/>
+        <source>the station&apos;s users are being read from the results database</source>
+        <translation>正在從結果資料庫讀取工站使用者</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="161"/>
+        <source>the station&apos;s users cannot be read: %1</source>
+        <translation>無法讀取工站使用者：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="166"/>
+        <source>nobody is logged in: log in with your user name and password (or badge)</source>
+        <translation>無人登入：請以使用者名稱和密碼（或識別證）登入</translation>
+    </message>
+    <message>
+        <location filename="../model/access/StationAccess.cpp" line="170"/>
+        <source>the recipe&apos;s approval is being read from the results database</source>
+        <translation>正在從結果資料庫讀取配方核准</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="19"/>
+        <location filename="../ui/eol/StationActions.cpp" line="22"/>
         <source>Reset alarm and test again</source>
         <translation>重置警報並重新測試</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="20"/>
+        <location filename="../ui/eol/StationActions.cpp" line="23"/>
         <source>Technician: test again…</source>
         <translation>技術員：重新測試…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="50"/>
+        <location filename="../ui/eol/StationActions.cpp" line="53"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>正在重置機號 %1 的警報…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="59"/>
+        <location filename="../ui/eol/StationActions.cpp" line="62"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>警報未解除；未開始任何測試：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="84"/>
+        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <source>reset the alarm</source>
+        <translation>警報重置</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <source>serial %1</source>
+        <translation>序號 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <source>test serial %1 again</source>
+        <translation>重新測試序號 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="101"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>測試前機號 %1 已有警報發生：未寫入任何資料。請重置警報（使用驅動器本身的重置功能；需要斷電重新上電的警報會另行提示），產品即會重新測試。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="97"/>
+        <location filename="../ui/eol/StationActions.cpp" line="130"/>
         <source>(no name)</source>
         <translation>（未填姓名）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="99"/>
+        <location filename="../ui/eol/StationActions.cpp" line="132"/>
         <source>Test again</source>
         <translation>重新測試</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="100"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -14587,6 +15286,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationFigures.cpp" line="35"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>本工站、此配方版本，自 %1 起（讀取於 %2）。以指令查看相同數據：%3</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationLogin</name>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <source>operator</source>
+        <translation>作業員</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <source>Operator:</source>
+        <translation>作業員:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <source>user name</source>
+        <translation>使用者名稱</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <source>password</source>
+        <translation>密碼</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <source>Log in</source>
+        <translation>登入</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <source>Log in:</source>
+        <translation>登入:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <source>Log out</source>
+        <translation>登出</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <source>Not logged in: %1</source>
+        <translation>未登入：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
+        <translation>已登入：&lt;b&gt;%1&lt;/b&gt;（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
+        <translation>尚未設定使用者：任何人都可執行、編輯和離開；請以 opentop-cli eol user add 設定使用者</translation>
     </message>
 </context>
 <context>
@@ -17136,32 +17888,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitRecordJson</name>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="113"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
         <source>not a unit record (format is not &quot;%1&quot;)</source>
         <translation>不是產品記錄 (format 不是 &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="116"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="118"/>
         <source>unit record version %1 is not known to this program (it reads up to %2)</source>
         <translation>本程式不認得產品記錄版本 %1 (最多可讀取 %2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="123"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="125"/>
         <source>the unit record has no serial number</source>
         <translation>產品記錄沒有序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="135"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="139"/>
         <source>unknown unit status &quot;%1&quot;</source>
         <translation>未知的產品狀態 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="149"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="153"/>
         <source>unknown variant source &quot;%1&quot;</source>
         <translation>未知的機型來源「%1」</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitRecordJson.cpp" line="188"/>
+        <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
     </message>
@@ -17290,6 +18042,14 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../ui/help/UserGuideDialog.cpp" line="86"/>
         <source>&lt;p&gt;The full description of the program: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;程式的完整說明：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UserStore</name>
+    <message>
+        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
+        <translation>使用者名稱為 1 至 64 個字母、數字或 . _ @ -（不可有空格）：「%1」</translation>
     </message>
 </context>
 <context>

@@ -77,6 +77,9 @@ QString CertificateHtml::html(const UnitRecord& r, const QVector<UnitRecord>& ea
         {tr("Serial number"), r.serial},
         {tr("Recipe"), tr("%1, revision %2").arg(r.recipeName, r.recipeRevision)},
         {tr("Recipe checksum"), r.recipeChecksum},
+        {tr("Recipe approved by"), r.approver.isEmpty()
+                                       ? tr("not approved (station without users)")
+                                       : tr("%1 (approval %2)").arg(r.approver, r.approvalId)},
         {tr("Station"), r.station},
         {tr("Operator"), r.operatorName},
         {tr("Attempt"), r.attempt > 0

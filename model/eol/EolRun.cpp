@@ -37,6 +37,8 @@ void EolRun::start(Done done)
     m_record.recipeName = m_recipe.product;
     m_record.recipeRevision = m_recipe.revision;
     m_record.recipeChecksum = m_options.recipeChecksum;
+    m_record.approvalId = m_options.approvalId;
+    m_record.approver = m_options.approver;
     m_record.started = QDateTime::currentDateTimeUtc();
     m_record.status = UnitStatus::Running;
     // Nothing is sent for a recipe or unit values that are not valid (the callers check first;

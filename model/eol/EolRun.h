@@ -35,6 +35,8 @@ public:
         QString station;
         QString operatorName;
         QString recipeChecksum; // as the recipe file carries it
+        QString approvalId;     // the approval it runs under (empty: unmanaged station)
+        QString approver;
         // This unit's per-unit values: machine number → parameter → engineering value.
         QHash<int, QHash<QString, double>> unitValues;
         // Variants stated by the person running the unit (eol run --variant), by machine

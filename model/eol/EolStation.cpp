@@ -1,6 +1,7 @@
 #include "eol/EolStation.h"
 
 #include "ModbusClient.h"
+#include "access/StationAccess.h"
 #include "eol/RecipeChecker.h"
 #include "eol/RecipeFile.h"
 #include "eol/ResultUrl.h"
@@ -26,10 +27,11 @@ constexpr int kLastUnits = 50;
 EolStation::EolStation(QObject* parent)
     : QObject(parent)
     , m_writer(std::make_unique<ResultWriter>())
+    , m_access(new StationAccess(m_writer.get(), this))
     , m_station(QSysInfo::machineHostName())
     , m_yield(new StationYield(m_writer.get(), this))
 {
-
+    m_access->setStation(m_station);
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &EolStation::retryUnsavedNow);
     connect(m_writer.get(), &ResultWriter::waitingChanged, this,
@@ -74,6 +76,8 @@ bool EolStation::loadRecipe(const QString& path, QStringList* problems)
     m_csv.reset();
     m_latchedAlarms.clear();
     refreshYield();
+    if (m_writer->isOpen())
+        m_access->refresh(m_checksum); // is this checksum approved?
     return true;
 }
 
@@ -106,6 +110,7 @@ void EolStation::openDatabase(const QString& url)
                            m_dbError.clear();
                            m_openDelayS = 2;
                            refreshYield();
+                           m_access->refresh(m_checksum);
                            if (!o.interrupted.isEmpty()) {
                                m_interrupted = o.interrupted;
                                emit interruptedFound(o.interrupted);
@@ -127,6 +132,8 @@ bool EolStation::openDatabaseAndWait(const QString& url, QString* error)
         m_writer->openAndWait(ResultUrl::stationLocation(url), m_station);
     if (!o.ok && error)
         *error = o.error;
+    if (o.ok)
+        m_access->refresh(m_checksum);
     if (o.ok && !o.interrupted.isEmpty()) {
         m_interrupted = o.interrupted;
         emit interruptedFound(o.interrupted);
@@ -144,6 +151,7 @@ bool EolStation::setStation(const QString& station)
     if (name == m_station)
         return true;
     m_station = name;
+    m_access->setStation(name);
     if (m_writer->isOpen())
         openDatabase(m_dbUrl); // the lease names the station
     return true;
@@ -151,12 +159,14 @@ bool EolStation::setStation(const QString& station)
 
 bool EolStation::hasDatabase() const
 {
-    return m_writer->isOpen();
+    // Open and its users read: whether units need a login is known before the first scan.
+    return m_writer->isOpen() && m_access->state() != StationAccess::State::Unknown;
 }
 
 bool EolStation::isOpeningDatabase() const
 {
-    return m_writer->isOpening();
+    return m_writer->isOpening() ||
+           (m_writer->isOpen() && m_access->state() == StationAccess::State::Unknown);
 }
 
 QString EolStation::databaseText() const
@@ -200,6 +210,14 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
                            .arg(m_dbError);
         return false;
     }
+    const QString refused = m_access->runRefusal(m_recipe.product, m_recipe.revision);
+    if (!refused.isEmpty()) {
+        *error = refused;
+        if (m_access->user())
+            m_access->audit(QStringLiteral("refused"),
+                            tr("run-units: serial %1: %2").arg(serial.trimmed(), refused));
+        return false;
+    }
     if (!client) {
         *error = tr("not connected to a bus");
         return false;
@@ -215,8 +233,12 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     EolRun::Options options;
     options.serial = serial.trimmed();
     options.station = m_station;
-    options.operatorName = m_operator;
+    options.operatorName = m_access->isManaged() ? m_access->operatorName() : m_operator;
     options.recipeChecksum = m_checksum;
+    if (m_access->isManaged() && m_access->approval()) {
+        options.approvalId = m_access->approval()->id;
+        options.approver = m_access->approval()->approver;
+    }
     options.unitValues = typed;
     options.timing = m_timing;
     options.writer = m_writer.get();
@@ -258,32 +280,39 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     RetestPolicy::check(m_writer.get(), m_recipe.retest, options.serial, m_checksum, this,
                         [this, token, retestBy,
                          client = QPointer<ModbusClient>(client)](const RetestPolicy::Decision& d) {
-                            if (token != m_startToken || !m_pendingStart)
-                                return; // cancelled meanwhile
-                            m_decision = d;
-                            const bool allowed =
-                                d.kind == RetestPolicy::Decision::Kind::Allowed ||
-                                (d.kind == RetestPolicy::Decision::Kind::NeedsTechnician &&
-                                 !retestBy.isEmpty());
-                            if (!allowed) {
-                                m_pendingStart = nullptr;
-                                const QString held = std::exchange(m_pendingSerial, QString());
-                                if (d.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
-                                    emit retestNeedsTechnician(held, d.reason);
-                                else
-                                    emit startRefused(held, d.reason);
-                                return;
-                            }
-                            if (d.kind != RetestPolicy::Decision::Kind::Allowed)
-                                emit retestAllowed(m_lastStart.serial, d.reason, retestBy);
-                            if (m_safe && !m_safeState) {
-                                m_pendingSerial.clear();
-                                std::exchange(m_pendingStart, nullptr)();
-                            } else {
-                                makeSafe(client);
-                            }
+                            if (token == m_startToken && m_pendingStart) // else cancelled since
+                                retestChecked(d, retestBy, client);
                         });
     return true;
+}
+
+void EolStation::retestChecked(const RetestPolicy::Decision& d, const QString& retestBy,
+                               ModbusClient* client)
+{
+    using Kind = RetestPolicy::Decision::Kind;
+    m_decision = d;
+    if (d.kind == Kind::Refused || (d.kind == Kind::NeedsTechnician && retestBy.isEmpty())) {
+        m_pendingStart = nullptr;
+        const QString held = std::exchange(m_pendingSerial, QString());
+        if (d.kind == Kind::NeedsTechnician)
+            emit retestNeedsTechnician(held, d.reason);
+        else
+            emit startRefused(held, d.reason);
+        return;
+    }
+    if (d.kind != Kind::Allowed) {
+        // An override of the recipe's rules: in the audit trail, whoever gave it.
+        m_access->audit(QStringLiteral("retest-override"),
+                        tr("serial %1 tested again, allowed by %2: %3")
+                            .arg(m_lastStart.serial, retestBy, d.reason));
+        emit retestAllowed(m_lastStart.serial, d.reason, retestBy);
+    }
+    if (m_safe && !m_safeState) {
+        m_pendingSerial.clear();
+        std::exchange(m_pendingStart, nullptr)();
+    } else {
+        makeSafe(client);
+    }
 }
 
 void EolStation::begin(ModbusClient* client, TrafficLog* traffic, const EolRun::Options& given)
@@ -361,6 +390,7 @@ void EolStation::finished(const UnitRecord& record)
     } else {
         count(record);
     }
+    m_access->refresh(m_checksum); // an approval superseded meanwhile stops the next unit
     m_last.prepend(record);
     if (m_last.size() > kLastUnits)
         m_last.removeLast();

@@ -21,6 +21,7 @@ namespace opentop {
 class ModbusClient;
 class ResultWriter;
 class StationYield;
+class StationAccess;
 class TrafficLog;
 class UnitValuesCsv;
 
@@ -40,6 +41,7 @@ public:
     bool hasRecipe() const { return m_hasRecipe; }
     const Recipe& recipe() const { return m_recipe; }
     QString recipePath() const { return m_recipePath; }
+    QString recipeChecksum() const { return m_checksum; } // what an approval names
     bool loadUnitValues(const QString& path, QString* error);
     bool hasUnitValues() const { return bool(m_csv); }
     // Per-unit values the operator types (the recipe's "operator" ones) for the next unit.
@@ -59,13 +61,18 @@ public:
     QString databaseError() const { return m_dbError; }
     // The URL given to openDatabase() (empty: OPENTOP_EOL_DB or the default file).
     QString databaseUrl() const { return m_dbUrl; }
-    bool hasDatabase() const;
+    bool hasDatabase() const; // open, and whether it has users is known (access())
     bool isOpeningDatabase() const;
     // The station's name in every record (default: the host's name). A database already open is
     // opened again under the new name; refused (false) while a unit runs or for a blank name.
     bool setStation(const QString& station);
     QString station() const { return m_station; }
+    // Typed on an unmanaged station; a managed one records the logged-in user (access()).
     void setOperatorName(const QString& name) { m_operator = name; }
+    QString operatorName() const { return m_operator; } // as typed on a station without users
+    // Users, the login and the recipe's approval (docs/eol-results.md): start() refuses a unit
+    // on a managed station without a logged-in user or an approved recipe.
+    StationAccess* access() const { return m_access; }
     void setTiming(const EolStepRunner::Timing& timing) { m_timing = timing; }
 
     // Starts a unit: false with *error (and nothing sent) when no recipe, no database, a per-unit
@@ -156,6 +163,9 @@ private:
     void scheduleRetry();
     void count(const UnitRecord& record); // a recorded verdict: the shift's figures again
     void refreshYield();
+    // The serial's retest rules answered: the unit goes on to be made safe, or is held back.
+    void retestChecked(const RetestPolicy::Decision& d, const QString& retestBy,
+                       ModbusClient* client);
     void begin(ModbusClient* client, TrafficLog* traffic, const EolRun::Options& options);
     QString unsafeText() const;
 
@@ -165,6 +175,7 @@ private:
     QString m_checksum;
     std::unique_ptr<UnitValuesCsv> m_csv;
     std::unique_ptr<ResultWriter> m_writer;
+    StationAccess* m_access;
     QString m_station;
     QString m_operator;
     EolStepRunner::Timing m_timing;

@@ -32,6 +32,8 @@ UnitRecord unitFrom(const QSqlQuery& q)
     r.status = unitStatusFromName(q.value(9).toString()).value_or(UnitStatus::Interrupted);
     r.failureReason = q.value(10).toString();
     r.attempt = q.value(11).toInt(); // NULL before schema 5: 0
+    r.approvalId = q.value(12).toString();
+    r.approver = q.value(13).toString();
     return r;
 }
 
@@ -60,9 +62,12 @@ QString ResultQueries::sourceColumns() const
 
 QString ResultQueries::unitColumns() const
 {
-    // Attempt numbers came with schema 5.
+    // Attempt numbers came with schema 5, approvals with 6 (older rows read as unapproved).
     return QString::fromLatin1(kUnitColumns)
-        .arg(database_.schemaVersion() >= 5 ? QStringLiteral("attempt") : QStringLiteral("NULL"));
+               .arg(database_.schemaVersion() >= 5 ? QStringLiteral("attempt")
+                                                   : QStringLiteral("NULL")) +
+           (database_.schemaVersion() >= 6 ? QStringLiteral(", approval_id, approver")
+                                           : QStringLiteral(", NULL, NULL"));
 }
 
 ResultQueries::ResultQueries(ResultDatabase& database)

@@ -142,6 +142,42 @@ const QVector<ResultSchema::Migration>& ResultSchema::migrations()
           QStringLiteral("CREATE INDEX units_by_station ON units (station, status)"),
           QStringLiteral("CREATE INDEX units_by_status ON units (status)"),
           QStringLiteral("CREATE INDEX units_by_checksum ON units (recipe_checksum, serial)")}},
+        {6,
+         QStringLiteral("users, recipe approvals, audit trail; each unit names its approval"),
+         {QStringLiteral("CREATE TABLE users ("
+                         " user_name VARCHAR(100) NOT NULL PRIMARY KEY,"
+                         " display_name VARCHAR(200) NOT NULL,"
+                         " role VARCHAR(20) NOT NULL CHECK (role IN"
+                         "  ('operator', 'technician', 'engineer', 'administrator')),"
+                         " password_hash VARCHAR(200) NOT NULL,"
+                         " salt VARCHAR(100) NOT NULL,"
+                         " iterations INTEGER NOT NULL,"
+                         " active INTEGER NOT NULL,"
+                         " created_utc VARCHAR(32) NOT NULL)"),
+          QStringLiteral("CREATE TABLE recipe_approvals ("
+                         " approval_id VARCHAR(40) NOT NULL PRIMARY KEY,"
+                         " recipe_checksum VARCHAR(200) NOT NULL,"
+                         " recipe_name VARCHAR(200) NOT NULL,"
+                         " recipe_revision VARCHAR(100) NOT NULL,"
+                         " approver VARCHAR(100) NOT NULL REFERENCES users (user_name),"
+                         " approved_utc VARCHAR(32) NOT NULL,"
+                         " station VARCHAR(200) NOT NULL,"
+                         " superseded INTEGER NOT NULL)"),
+          QStringLiteral(
+              "CREATE INDEX approvals_by_checksum ON recipe_approvals (recipe_checksum)"),
+          // at_s: seconds since 1970 by the database's clock, one order for every station.
+          QStringLiteral("CREATE TABLE audit ("
+                         " audit_id VARCHAR(40) NOT NULL PRIMARY KEY,"
+                         " at_s DOUBLE PRECISION NOT NULL,"
+                         " station VARCHAR(200) NOT NULL,"
+                         " user_name VARCHAR(100) NOT NULL,"
+                         " action VARCHAR(40) NOT NULL,"
+                         " detail TEXT NOT NULL)"),
+          QStringLiteral("CREATE INDEX audit_by_time ON audit (at_s)"),
+          // NULL on units tested before users (or on an unmanaged station).
+          QStringLiteral("ALTER TABLE units ADD COLUMN approval_id VARCHAR(40)"),
+          QStringLiteral("ALTER TABLE units ADD COLUMN approver VARCHAR(100)")},
+         {}},
     };
     return list;
 }

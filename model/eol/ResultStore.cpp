@@ -99,21 +99,36 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
         record.attempt = q.value(0).toInt() + 1;
         q.finish();
     }
-    q.prepare(QStringLiteral(
-                  "INSERT INTO units (unit_id, serial, station, operator_name, started_utc,"
-                  " ended_utc, recipe_name, recipe_revision, recipe_checksum, status,"
-                  " failure_reason%1%3) VALUES (?, ?, ?, ?, ?, NULL, ?, ?, ?, 'running', ''%2%4)")
-                  .arg(leases ? QStringLiteral(", lease_id") : QString(),
-                       leases ? QStringLiteral(", ?") : QString(),
-                       attempts ? QStringLiteral(", attempt") : QString(),
-                       attempts ? QStringLiteral(", ?") : QString()));
+    const bool approvals = database_.schemaVersion() >= 6;
+    // Columns of later schema versions, where the database has them.
+    QString columns;
+    QString marks;
+    const auto add = [&](bool has, const char* names, const char* places) {
+        if (has) {
+            columns += QLatin1String(names);
+            marks += QLatin1String(places);
+        }
+    };
+    add(leases, ", lease_id", ", ?");
+    add(attempts, ", attempt", ", ?");
+    add(approvals, ", approval_id, approver", ", ?, ?");
+    q.prepare(QStringLiteral("INSERT INTO units (unit_id, serial, station, operator_name, "
+                             "started_utc, ended_utc, recipe_name, recipe_revision, "
+                             "recipe_checksum, status, failure_reason%1) VALUES (?, ?, ?, ?, ?, "
+                             "NULL, ?, ?, ?, 'running', ''%2)")
+                  .arg(columns, marks));
     bind(q, {record.id, record.serial, record.station, record.operatorName,
              UnitRecordJson::timeText(record.started), record.recipeName, record.recipeRevision,
              record.recipeChecksum});
+    const QVariant none(QMetaType::fromType<QString>());
     if (leases)
-        q.addBindValue(lease_.isEmpty() ? QVariant(QMetaType::fromType<QString>()) : lease_);
+        q.addBindValue(lease_.isEmpty() ? none : QVariant(lease_));
     if (attempts)
         q.addBindValue(record.attempt);
+    if (approvals) {
+        q.addBindValue(record.approvalId.isEmpty() ? none : QVariant(record.approvalId));
+        q.addBindValue(record.approver.isEmpty() ? none : QVariant(record.approver));
+    }
     if (!run(q, error) || !database_.commit(error)) {
         database_.rollback();
         return false;
@@ -141,8 +156,8 @@ bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
                                        " VALUES (?, ?, ?, ?, ?, ?)"));
     for (int i = 0; i < r.drives.size(); ++i) {
         const UnitDrive& d = r.drives[i];
-        QVariantList values{QVariant(r.id),      QVariant(i),         QVariant(d.machineNumber),
-                            QVariant(d.model),   QVariant(d.variant), QVariant(d.firmware)};
+        QVariantList values{QVariant(r.id),    QVariant(i),         QVariant(d.machineNumber),
+                            QVariant(d.model), QVariant(d.variant), QVariant(d.firmware)};
         if (sources)
             values << QVariant(variantSourceName(d.variantSource)) << QVariant(d.variantProof);
         for (const QVariant& v : values) // as bind() does: a null text is an empty one

@@ -88,7 +88,8 @@ bool UnitRecord::operator==(const UnitRecord& o) const
     return id == o.id && serial == o.serial && station == o.station &&
            operatorName == o.operatorName && started == o.started && ended == o.ended &&
            recipeName == o.recipeName && recipeRevision == o.recipeRevision &&
-           recipeChecksum == o.recipeChecksum && status == o.status && attempt == o.attempt &&
+           recipeChecksum == o.recipeChecksum && approvalId == o.approvalId &&
+           approver == o.approver && status == o.status && attempt == o.attempt &&
            failureReason == o.failureReason && drives == o.drives &&
            writtenValues == o.writtenValues && measurements == o.measurements &&
            traffic == o.traffic;

@@ -91,6 +91,10 @@ struct UnitRecord
     QString recipeName;
     QString recipeRevision;
     QString recipeChecksum;
+    // The recipe approval the unit ran under (access/RecipeApprovals) and its approver; empty
+    // on a station without users (unmanaged) and on records from before approvals.
+    QString approvalId;
+    QString approver;
     UnitStatus status = UnitStatus::Running;
     // Which verdict of this serial under this recipe (checksum) this is: 1 for the first test,
     // 2 for the first retest… A record without a verdict (error, aborted) has the number its

@@ -86,7 +86,9 @@ QJsonObject UnitRecordJson::toJson(const UnitRecord& r)
         {QStringLiteral("ended"), timeText(r.ended)},
         {QStringLiteral("recipe"), QJsonObject{{QStringLiteral("name"), r.recipeName},
                                                {QStringLiteral("revision"), r.recipeRevision},
-                                               {QStringLiteral("checksum"), r.recipeChecksum}}},
+                                               {QStringLiteral("checksum"), r.recipeChecksum},
+                                               {QStringLiteral("approval"), r.approvalId},
+                                               {QStringLiteral("approver"), r.approver}}},
         {QStringLiteral("status"), unitStatusName(r.status)},
         {QStringLiteral("attempt"), r.attempt},
         {QStringLiteral("failureReason"), r.failureReason},
@@ -129,6 +131,8 @@ std::optional<UnitRecord> UnitRecordJson::fromJson(const QJsonObject& json, QStr
     r.recipeName = recipe.value(QStringLiteral("name")).toString();
     r.recipeRevision = recipe.value(QStringLiteral("revision")).toString();
     r.recipeChecksum = recipe.value(QStringLiteral("checksum")).toString();
+    r.approvalId = recipe.value(QStringLiteral("approval")).toString();
+    r.approver = recipe.value(QStringLiteral("approver")).toString();
     const QString statusText = json.value(QStringLiteral("status")).toString();
     const auto status = unitStatusFromName(statusText);
     if (!status)

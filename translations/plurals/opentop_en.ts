@@ -91,7 +91,7 @@
 <context>
     <name>opentop::CertificateHtml</name>
     <message numerus="yes">
-        <location filename="../../model/eol/CertificateHtml.cpp" line="114"/>
+        <location filename="../../model/eol/CertificateHtml.cpp" line="117"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>This serial failed %n earlier test; they are listed below.</numerusform>
@@ -300,7 +300,7 @@
 <context>
     <name>opentop::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../ui/main/MainWindow.cpp" line="440"/>
+        <location filename="../../ui/main/MainWindow.cpp" line="441"/>
         <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
         <translation>
             <numerusform>%n edit has not been written to the drives. Quit and discard it?</numerusform>
@@ -400,7 +400,7 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="270"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>
@@ -408,7 +408,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="477"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="482"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
@@ -419,7 +419,7 @@
 <context>
     <name>opentop::RecipeEditor</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="250"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n problem: the recipe cannot be saved until it is fixed.</numerusform>
@@ -427,7 +427,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="262"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>the recipe does not pass check (%n problem); nothing was saved</numerusform>

@@ -1,5 +1,8 @@
 #include "eol/EolMenu.h"
 
+#include "access/StationAccess.h"
+#include "eol/IdentityDialog.h"
+#include "eol/RecipeApproveButton.h"
 #include "eol/RecipeEditor.h"
 #include "eol/ResultsBrowser.h"
 
@@ -32,7 +35,19 @@ EolMenu::EolMenu(QMenu* menu, QWidget* window, std::function<BusDrives*()> drive
     auto editor = std::make_shared<QPointer<RecipeEditor>>();
     auto results = std::make_shared<QPointer<ResultsBrowser>>();
     m_editor = menu->addAction(tr("&Recipe editor…"), this, [this, editor] {
-        showOnce<RecipeEditor>(*editor, [this] { return new RecipeEditor(m_drives, m_window); });
+        auto open = [this, editor](const AccessDecision&) {
+            showOnce<RecipeEditor>(*editor, [this] {
+                auto* made = new RecipeEditor(m_drives, m_window);
+                made->addToolbarButton(new RecipeApproveButton(
+                    m_access, [made] { return made->path(); }, made));
+                return made;
+            });
+        };
+        if (m_access && !*editor)
+            IdentityDialog::ask(m_access, Privilege::EditRecipe, tr("the recipe editor"), m_window,
+                                open);
+        else
+            open(AccessDecision{});
     });
     m_editor->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
     m_results = menu->addAction(tr("Re&sults…"), this, [this, results] {
@@ -40,6 +55,11 @@ EolMenu::EolMenu(QMenu* menu, QWidget* window, std::function<BusDrives*()> drive
                                  [this] { return new ResultsBrowser(QString(), m_window); });
     });
     m_results->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+}
+
+void EolMenu::setAccess(StationAccess* access)
+{
+    m_access = access;
 }
 
 } // namespace opentop

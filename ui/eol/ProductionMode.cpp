@@ -1,6 +1,8 @@
 #include "eol/ProductionMode.h"
 
+#include "access/StationAccess.h"
 #include "eol/EolStation.h"
+#include "eol/IdentityDialog.h"
 #include "eol/ProductionView.h"
 
 #include <QAction>
@@ -109,6 +111,22 @@ void ProductionMode::setActive(bool active)
         m_toggle->setChecked(true);
         return;
     }
+    if (!active && !m_leaving && isActive() && m_station->access()->mayBeManaged()) {
+        // Parameters and the recipe editor are behind this: an engineer's privilege.
+        {
+            const QSignalBlocker block(m_toggle);
+            m_toggle->setChecked(true);
+        }
+        IdentityDialog::ask(m_station->access(), Privilege::LeaveProduction,
+                            tr("leave production mode"), m_window, [this](const AccessDecision&) {
+                                m_leaving = true;
+                                setActive(false);
+                                m_leaving = false;
+                            });
+        return;
+    }
+    if (!active)
+        m_station->access()->logout(); // the next operator logs in again
     if (m_toggle->isChecked() != active) {
         const QSignalBlocker block(m_toggle);
         m_toggle->setChecked(active);

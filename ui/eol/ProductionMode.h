@@ -57,6 +57,7 @@ private:
     QAction* m_stationName;
     QVector<QDockWidget*> m_hiddenDocks;
     bool m_warnedDatabase = false; // the operator was told the database cannot be reached
+    bool m_leaving = false;        // leaving was allowed (IdentityDialog)
 };
 
 } // namespace opentop

@@ -1,9 +1,12 @@
 #include "eol/ProductionView.h"
 
+#include "access/StationAccess.h"
 #include "eol/EolSpeedChart.h"
 #include "eol/EolStation.h"
+#include "eol/IdentityDialog.h"
 #include "eol/StationActions.h"
 #include "eol/StationFigures.h"
+#include "eol/StationLogin.h"
 #include "profile/ProfileRegistry.h"
 
 #include <QApplication>
@@ -23,8 +26,6 @@
 #include <QTime>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <pwd.h>
-#include <unistd.h>
 
 namespace opentop {
 
@@ -47,12 +48,6 @@ QTableWidget* table(const QStringList& headers, QWidget* parent)
     t->setSelectionMode(QAbstractItemView::NoSelection);
     t->setFocusPolicy(Qt::NoFocus); // the serial field keeps the scanner's keys
     return t;
-}
-
-QString loginName()
-{
-    const passwd* user = ::getpwuid(::geteuid());
-    return user ? QString::fromLocal8Bit(user->pw_name) : QString();
 }
 
 } // namespace
@@ -78,17 +73,14 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     m_notice->setStyleSheet(QStringLiteral(
         "QLabel { background: #ffe08a; color: black; padding: 4px; border-radius: 4px; }"));
     m_notice->hide();
-    m_operator = new QLineEdit(loginName(), this);
-    m_operator->setPlaceholderText(tr("operator"));
-    m_operator->setMaximumWidth(180);
+    m_login = new StationLogin(station, this);
     auto* top = new QHBoxLayout;
     top->addWidget(new QLabel(tr("Recipe:"), this));
     top->addWidget(m_recipe, 1);
     top->addWidget(openRecipe);
     top->addWidget(openValues);
     top->addSpacing(12);
-    top->addWidget(new QLabel(tr("Operator:"), this));
-    top->addWidget(m_operator);
+    top->addWidget(m_login);
 
     m_serial = new QLineEdit(this);
     m_serial->setObjectName(QStringLiteral("serialField"));
@@ -133,13 +125,14 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
     layout->addWidget(m_database);
+    layout->addWidget(m_login->notice());
     layout->addWidget(m_notice);
     layout->addLayout(serialRow);
     layout->addWidget(m_scanNote);
     layout->addWidget(m_verdict);
     layout->addWidget(m_reason);
     m_actions = new StationActions(
-        m_station, m_client, [this] { return m_operator->text().trimmed(); }, this);
+        m_station, m_client, [this] { return m_station->operatorName().trimmed(); }, this);
     layout->addWidget(m_actions);
     layout->addWidget(middle, 3);
     layout->addWidget(m_counters);
@@ -155,8 +148,11 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
         if (m_station->isRunning() || m_station->isStarting())
             m_station->cancel();
     });
-    connect(m_operator, &QLineEdit::textChanged, m_station, &EolStation::setOperatorName);
-    m_station->setOperatorName(m_operator->text());
+    connect(m_login, &StationLogin::loggedIn, this, &ProductionView::focusSerial);
+    connect(m_station->access(), &StationAccess::changed, this, [this] {
+        if (m_login->needsLogin() && isVisible())
+            m_login->focusUser();
+    });
     connect(m_station, &EolStation::unitStarted, this, &ProductionView::unitStarted);
     connect(m_station, &EolStation::phaseChanged, this,
             [this](int n, EolDriveRun::Phase phase, const QString& text) {
@@ -212,6 +208,10 @@ void ProductionView::showEvent(QShowEvent* event)
 
 void ProductionView::focusSerial()
 {
+    if (m_login->needsLogin()) { // a badge's keys go to the login first
+        m_login->focusUser();
+        return;
+    }
     m_serial->setFocus();
     m_serial->selectAll();
 }
@@ -227,6 +227,7 @@ bool ProductionView::openRecipe(const QString& path)
         return false;
     }
     refreshRecipe();
+    m_login->refresh();
     if (isVisible())
         makeSafe();
     focusSerial();
@@ -241,10 +242,14 @@ void ProductionView::makeSafe()
 
 void ProductionView::chooseRecipe()
 {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open recipe"), QString(), tr("Recipes (*.json)"));
-    if (!path.isEmpty())
-        openRecipe(path);
+    // Another recipe changes what the line builds: an engineer's, on a managed station.
+    IdentityDialog::ask(m_station->access(), Privilege::EditRecipe, tr("open another recipe"), this,
+                        [this](const AccessDecision&) {
+                            const QString path = QFileDialog::getOpenFileName(
+                                this, tr("Open recipe"), QString(), tr("Recipes (*.json)"));
+                            if (!path.isEmpty())
+                                openRecipe(path);
+                        });
 }
 
 void ProductionView::chooseUnitValues()

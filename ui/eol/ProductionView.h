@@ -18,6 +18,7 @@ class EolStation;
 class ModbusClient;
 class StationActions;
 class StationFigures;
+class StationLogin;
 class TrafficLog;
 
 // The operator screen of an end-of-line station: a large serial-number field that takes a
@@ -39,6 +40,7 @@ public:
     QLabel* noticeLabel() const { return m_notice; }
     QLabel* scanNoteLabel() const { return m_scanNote; }
     StationActions* actions() const { return m_actions; }
+    StationLogin* login() const { return m_login; }
     // The station makes the recipe's drives safe on the bus the window is connected to.
     void makeSafe();
     QPushButton* cancelButton() const { return m_cancel; }
@@ -79,7 +81,7 @@ private:
     QLabel* m_database;
     QLabel* m_notice;
     QLabel* m_scanNote;
-    QLineEdit* m_operator;
+    StationLogin* m_login;
     QLineEdit* m_serial;
     QPushButton* m_cancel;
     QTableWidget* m_drives;

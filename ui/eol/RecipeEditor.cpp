@@ -111,17 +111,22 @@ QWidget* RecipeEditor::makeToolbar()
     auto* open = new QPushButton(tr("Open…"), bar);
     m_save = new QPushButton(tr("Save"), bar);
     auto* saveAs = new QPushButton(tr("Save as…"), bar);
-    auto* layout = new QHBoxLayout(bar);
-    layout->setContentsMargins(0, 0, 0, 0);
+    m_bar = new QHBoxLayout(bar);
+    m_bar->setContentsMargins(0, 0, 0, 0);
     for (QPushButton* b : {fromDrives, fromBackup, open, m_save, saveAs})
-        layout->addWidget(b);
-    layout->addStretch(1);
+        m_bar->addWidget(b);
+    m_bar->addStretch(1);
     connect(fromDrives, &QPushButton::clicked, this, &RecipeEditor::chooseDrives);
     connect(fromBackup, &QPushButton::clicked, this, &RecipeEditor::chooseBackup);
     connect(open, &QPushButton::clicked, this, &RecipeEditor::chooseOpen);
     connect(m_save, &QPushButton::clicked, this, [this] { chooseSave(false); });
     connect(saveAs, &QPushButton::clicked, this, [this] { chooseSave(true); });
     return bar;
+}
+
+void RecipeEditor::addToolbarButton(QPushButton* button)
+{
+    m_bar->insertWidget(m_bar->count() - 1, button); // before the stretch
 }
 
 void RecipeEditor::setDocument(const QJsonObject& document)

@@ -7,6 +7,7 @@
 #include <functional>
 
 class QComboBox;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -45,6 +46,9 @@ public:
     bool saveTo(const QString& path, QString* error);
     QString path() const { return m_path; }
 
+    // A button of another feature on the toolbar (the approval: RecipeApproveButton).
+    void addToolbarButton(QPushButton* button);
+
     RecipePositionForm* positionForm() const { return m_form; }
     QListWidget* problemsList() const { return m_problems; }
     QComboBox* positionChooser() const { return m_positions; }
@@ -76,6 +80,7 @@ private:
     QLabel* m_verdict = nullptr;
     QLabel* m_message = nullptr;
     QPushButton* m_save = nullptr;
+    QHBoxLayout* m_bar = nullptr;
     QTimer* m_checkTimer = nullptr;
     bool m_loading = false;
 };

@@ -1,6 +1,9 @@
 #include "eol/StationActions.h"
 
+#include "access/AccessPolicy.h"
+#include "access/StationAccess.h"
 #include "eol/EolStation.h"
+#include "eol/IdentityDialog.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -61,17 +64,31 @@ StationActions::StationActions(EolStation* station, std::function<ModbusClient*(
                      m_reset);
             });
     connect(m_reset, &QPushButton::clicked, this, [this] {
-        m_reset->setEnabled(false);
-        m_station->resetAlarmsAndRetry(m_client());
+        StationAccess* access = m_station->access();
+        const auto& user = access->user();
+        // The logged-in operator may reset (AccessPolicy); anyone else is asked who they are.
+        if (access->mayBeManaged() &&
+            !(user && AccessPolicy::allows(user->role, Privilege::ResetAlarm))) {
+            IdentityDialog::ask(access, Privilege::ResetAlarm, tr("reset the alarm"), this,
+                                [this](const AccessDecision&) { resetAlarms(); });
+            return;
+        }
+        if (user)
+            access->audit(QStringLiteral("reset-alarm"),
+                          tr("serial %1").arg(m_station->lastSerial()));
+        resetAlarms();
     });
     connect(m_retest, &QPushButton::clicked, this, [this] {
-        const QString by = whoAllows();
-        if (by.isEmpty())
+        StationAccess* access = m_station->access();
+        if (access->mayBeManaged()) {
+            // A technician (or higher) identifies themselves; the dialog audits it.
+            IdentityDialog::ask(
+                access, Privilege::OverrideRetestLimit,
+                tr("test serial %1 again").arg(m_retestSerial), this,
+                [this](const AccessDecision& d) { retestBy(d.user ? d.user->name : QString()); });
             return;
-        QString error;
-        clear();
-        if (!m_station->startAgain(m_client(), by, &error))
-            show(error, nullptr);
+        }
+        retestBy(whoAllows());
     });
 }
 
@@ -89,6 +106,22 @@ void StationActions::unitFinished(const UnitRecord& record)
         return;
     }
     clear();
+}
+
+void StationActions::resetAlarms()
+{
+    m_reset->setEnabled(false);
+    m_station->resetAlarmsAndRetry(m_client());
+}
+
+void StationActions::retestBy(const QString& by)
+{
+    if (by.isEmpty())
+        return;
+    QString error;
+    clear();
+    if (!m_station->startAgain(m_client(), by, &error))
+        show(error, nullptr);
 }
 
 QString StationActions::whoAllows()

@@ -33,7 +33,9 @@ private:
     void unitFinished(const UnitRecord& record);
     void show(const QString& text, QPushButton* button);
     void clear();
-    QString whoAllows(); // empty: nobody, nothing is started
+    QString whoAllows(); // a station without users: the person at the screen, asked
+    void resetAlarms();
+    void retestBy(const QString& by); // empty: nobody allowed it, nothing is started
 
     EolStation* m_station;
     std::function<ModbusClient*()> m_client;

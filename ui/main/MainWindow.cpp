@@ -75,10 +75,11 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
         this, m_docks, [this] { return m_pages->selected(); }, [this] { return m_settings; });
     connect(m_pages, &DrivePages::sameFamilySelected, m_menus->multiWriteAction(),
             &QAction::setEnabled);
-    new EolMenu(m_menus->eolMenu(), this, [this] { return m_drives; });
+    auto* eolMenu = new EolMenu(m_menus->eolMenu(), this, [this] { return m_drives; });
     m_production = new ProductionMode(
         this, m_splitter, column, m_menus->editingMenus(), [this] { return m_client.get(); },
         m_log.get());
+    eolMenu->setAccess(m_production->station()->access());
     m_menus->viewMenu()->addSeparator();
     m_menus->viewMenu()->addAction(m_production->toggleAction());
     m_menus->viewMenu()->addAction(m_production->fullScreenAction());
