@@ -15191,49 +15191,54 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>技術者: 再試験…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="53"/>
+        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <source>A technician may allow unit %1 to be tested again.</source>
+        <translation>技術者がユニット %1 の再試験を許可できます。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="54"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>局番 %1 のアラームをリセットしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="62"/>
+        <location filename="../ui/eol/StationActions.cpp" line="63"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>アラームが解除されていません。何も開始していません:
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <location filename="../ui/eol/StationActions.cpp" line="73"/>
         <source>reset the alarm</source>
         <translation>アラームをリセットする</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <location filename="../ui/eol/StationActions.cpp" line="79"/>
         <source>serial %1</source>
         <translation>シリアル %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <location filename="../ui/eol/StationActions.cpp" line="88"/>
         <source>test serial %1 again</source>
         <translation>シリアル %1 を再試験する</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="101"/>
+        <location filename="../ui/eol/StationActions.cpp" line="102"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>試験前に局番 %1 でアラームが発生していました。何も書き込んでいません。アラームをリセットすると（ドライバ自身のリセット。電源再投入が必要なアラームはその旨を表示します）、製品を再試験します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="130"/>
+        <location filename="../ui/eol/StationActions.cpp" line="131"/>
         <source>(no name)</source>
         <translation>（名前なし）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="132"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>Test again</source>
         <translation>再試験</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>

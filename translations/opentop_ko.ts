@@ -15191,49 +15191,54 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
         <translation>기술자: 다시 검사…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="53"/>
+        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <source>A technician may allow unit %1 to be tested again.</source>
+        <translation>기술자가 유닛 %1의 재시험을 허가할 수 있습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="54"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>국번 %1의 알람을 리셋하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="62"/>
+        <location filename="../ui/eol/StationActions.cpp" line="63"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>알람이 해제되지 않았습니다. 아무것도 시작하지 않았습니다:
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <location filename="../ui/eol/StationActions.cpp" line="73"/>
         <source>reset the alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <location filename="../ui/eol/StationActions.cpp" line="79"/>
         <source>serial %1</source>
         <translation>시리얼 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <location filename="../ui/eol/StationActions.cpp" line="88"/>
         <source>test serial %1 again</source>
         <translation>시리얼 %1 재시험</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="101"/>
+        <location filename="../ui/eol/StationActions.cpp" line="102"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>검사 전에 국번 %1에 알람이 발생해 있었습니다. 아무것도 쓰지 않았습니다. 알람을 리셋하면(드라이버 자체의 리셋 사용, 전원 재투입이 필요한 알람은 따로 표시됨) 제품을 다시 검사합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="130"/>
+        <location filename="../ui/eol/StationActions.cpp" line="131"/>
         <source>(no name)</source>
         <translation>(이름 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="132"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>Test again</source>
         <translation>다시 검사</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>

@@ -15191,49 +15191,54 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>技术员：重新测试…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="53"/>
+        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <source>A technician may allow unit %1 to be tested again.</source>
+        <translation>技术员可允许单元 %1 重新测试。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="54"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>正在复位站号 %1 的报警…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="62"/>
+        <location filename="../ui/eol/StationActions.cpp" line="63"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>报警未清除；未开始任何测试：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <location filename="../ui/eol/StationActions.cpp" line="73"/>
         <source>reset the alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <location filename="../ui/eol/StationActions.cpp" line="79"/>
         <source>serial %1</source>
         <translation>序列号 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <location filename="../ui/eol/StationActions.cpp" line="88"/>
         <source>test serial %1 again</source>
         <translation>重新测试序列号 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="101"/>
+        <location filename="../ui/eol/StationActions.cpp" line="102"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>测试前站号 %1 上已有报警：未写入任何内容。请复位报警（使用驱动器自身的复位功能；需要重新上电的报警会另行提示），产品随即重新测试。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="130"/>
+        <location filename="../ui/eol/StationActions.cpp" line="131"/>
         <source>(no name)</source>
         <translation>（未填姓名）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="132"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>Test again</source>
         <translation>重新测试</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>

@@ -15191,49 +15191,54 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
         <translation>技術員：重新測試…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="53"/>
+        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <source>A technician may allow unit %1 to be tested again.</source>
+        <translation>技術員可允許單元 %1 重新測試。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationActions.cpp" line="54"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>正在重置機號 %1 的警報…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="62"/>
+        <location filename="../ui/eol/StationActions.cpp" line="63"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>警報未解除；未開始任何測試：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="72"/>
+        <location filename="../ui/eol/StationActions.cpp" line="73"/>
         <source>reset the alarm</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="78"/>
+        <location filename="../ui/eol/StationActions.cpp" line="79"/>
         <source>serial %1</source>
         <translation>序號 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="87"/>
+        <location filename="../ui/eol/StationActions.cpp" line="88"/>
         <source>test serial %1 again</source>
         <translation>重新測試序號 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="101"/>
+        <location filename="../ui/eol/StationActions.cpp" line="102"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>測試前機號 %1 已有警報發生：未寫入任何資料。請重置警報（使用驅動器本身的重置功能；需要斷電重新上電的警報會另行提示），產品即會重新測試。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="130"/>
+        <location filename="../ui/eol/StationActions.cpp" line="131"/>
         <source>(no name)</source>
         <translation>（未填姓名）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="132"/>
+        <location filename="../ui/eol/StationActions.cpp" line="133"/>
         <source>Test again</source>
         <translation>重新測試</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>

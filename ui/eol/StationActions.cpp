@@ -43,8 +43,9 @@ StationActions::StationActions(EolStation* station, std::function<ModbusClient*(
     connect(m_station, &EolStation::retestNeedsTechnician, this,
             [this](const QString& serial, const QString& why) {
                 m_retestSerial = serial;
-                m_retestWhy = why;
-                show(why, m_retest);
+                m_retestWhy = why; // shown under the verdict; asked again when allowing
+                show(tr("A technician may allow unit %1 to be tested again.").arg(serial),
+                     m_retest);
             });
     connect(m_station, &EolStation::alarmResetStarted, this, [this](const QVector<int>& drives) {
         QStringList names;

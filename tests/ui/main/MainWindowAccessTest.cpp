@@ -18,6 +18,7 @@
 #include "eol/RecipeFile.h"
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
+#include "eol/StationActions.h"
 #include "eol/StationLogin.h"
 #include "workspace/DriveWorkspace.h"
 
@@ -25,6 +26,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QTableWidget>
 #include <QTemporaryDir>
 
 using namespace opentop;
@@ -346,4 +348,92 @@ TEST_F(MainWindowAccessTest, TheRecipeEditorAndItsApproveAskForAnEngineer)
     const auto approval = RecipeApprovals(*database).current(checksum, &error);
     ASSERT_TRUE(approval) << qPrintable(error);
     EXPECT_EQ(approval->approver, QStringLiteral("erik"));
+}
+
+// Issue 25 items 4 and 5 together: a passed serial scanned again waits for a technician; the
+// logged-in operator is refused in the identity dialog, a technician allows it, and the override
+// is in the audit trail with the retest's attempt number on its record.
+TEST_F(MainWindowAccessTest, ARetestOfAPassedSerialAsksATechnicianNotTheOperator)
+{
+    QTemporaryDir dir;
+    const QString db = dir.filePath(QStringLiteral("results.db"));
+    addUsers(db);
+    {
+        QString error;
+        auto database = ResultDatabase::open(db, &error);
+        ASSERT_TRUE(database) << qPrintable(error);
+        ASSERT_TRUE(AccessCheck(*database, QStringLiteral("setup"))
+                        .addUser({QStringLiteral("ada"), QStringLiteral("adm-pass")},
+                                 person(QStringLiteral("tess"), QStringLiteral("Tess T."),
+                                        Role::Technician),
+                                 QStringLiteral("tech-pass"), &error))
+            << qPrintable(error);
+    }
+    qputenv("OPENTOP_EOL_DB", db.toLocal8Bit());
+    window->production()->toggleAction()->trigger();
+    qunsetenv("OPENTOP_EOL_DB");
+    EolStation* station = window->production()->station();
+    ProductionView* view = window->production()->view();
+    ASSERT_TRUE(waitFor([&] { return station->access()->isManaged(); }));
+    ASSERT_TRUE(view->openRecipe(recipeFile(dir)));
+    std::optional<AccessDecision> approval;
+    station->access()->approve(Identity{QStringLiteral("erik"), QStringLiteral("eng-pass")},
+                               station->recipe().product, station->recipe().revision,
+                               station->recipeChecksum(), view,
+                               [&](const AccessDecision& d) { approval = d; });
+    ASSERT_TRUE(waitFor([&] { return approval.has_value(); }));
+    ASSERT_TRUE(approval->allowed) << qPrintable(approval->message);
+    StationLogin* login = view->login();
+    login->userField()->setText(QStringLiteral("olga"));
+    login->passwordField()->setText(QStringLiteral("op-pass"));
+    QTest::keyClick(login->passwordField(), Qt::Key_Return);
+    ASSERT_TRUE(waitFor([&] { return station->access()->user().has_value(); }));
+
+    const auto scan = [&](int rows) {
+        view->serialField()->setText(QStringLiteral("SN-R"));
+        QTest::keyClick(view->serialField(), Qt::Key_Return);
+        return waitFor(
+            [&] {
+                return (view->unitsTable()->rowCount() > rows ||
+                        view->verdictLabel()->text() == QLatin1String("NOT STARTED")) &&
+                       !station->isRunning() && !station->isStarting();
+            },
+            30000);
+    };
+    ASSERT_TRUE(scan(0));
+    ASSERT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"));
+    ASSERT_TRUE(scan(1));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("NOT STARTED"));
+    QPushButton* retest = view->actions()->retestButton();
+    ASSERT_TRUE(waitFor([&] { return retest->isVisible(); }));
+
+    retest->click();
+    const QString refused =
+        answerIdentity(window.get(), QStringLiteral("olga"), QStringLiteral("op-pass"), false);
+    EXPECT_TRUE(refused.contains(QStringLiteral("olga (operator) may not"))) << qPrintable(refused);
+    EXPECT_EQ(view->unitsTable()->rowCount(), 1) << "nothing started for the operator";
+    ASSERT_TRUE(retest->isVisible());
+    retest->click();
+    answerIdentity(window.get(), QStringLiteral("tess"), QStringLiteral("tech-pass"), true);
+    ASSERT_TRUE(waitFor(
+        [&] { return view->unitsTable()->rowCount() == 2 && !station->isRunning(); }, 30000));
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("PASS"))
+        << qPrintable(view->reasonLabel()->text());
+    QString error;
+    auto database = ResultDatabase::open(db, &error);
+    ASSERT_TRUE(database) << qPrintable(error);
+    const auto history = ResultQueries(*database).history(QStringLiteral("SN-R"), &error);
+    ASSERT_TRUE(history && history->size() == 2) << qPrintable(error);
+    EXPECT_EQ(history->at(1).attempt, 2);
+    EXPECT_EQ(history->at(1).operatorName, QStringLiteral("olga"));
+    EXPECT_TRUE(waitFor([&] {
+        const auto trail = AuditTrail(*database).query({}, &error);
+        if (!trail)
+            return false;
+        bool override = false;
+        for (const AuditEntry& e : *trail)
+            override = override || (e.action == QLatin1String("retest-override") &&
+                                    e.detail.contains(QStringLiteral("allowed by tess")));
+        return override;
+    })) << "the override is in the audit trail";
 }
