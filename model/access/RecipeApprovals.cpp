@@ -9,19 +9,6 @@
 
 namespace opentop {
 
-namespace {
-
-bool run(QSqlQuery& q, QString* error)
-{
-    if (q.exec())
-        return true;
-    if (error)
-        *error = q.lastError().text();
-    return false;
-}
-
-} // namespace
-
 RecipeApprovals::RecipeApprovals(ResultDatabase& database)
     : database_(database)
 {
@@ -45,7 +32,7 @@ std::optional<RecipeApproval> RecipeApprovals::current(const QString& checksum, 
         " approved_utc, station FROM recipe_approvals WHERE recipe_checksum = ? AND superseded = 0"
         " ORDER BY approved_utc DESC"));
     q.addBindValue(checksum);
-    if (!run(q, error) || !q.next())
+    if (!ResultDatabase::run(q, error) || !q.next())
         return std::nullopt;
     RecipeApproval a;
     a.id = q.value(0).toString();
@@ -86,7 +73,7 @@ std::optional<RecipeApproval> RecipeApprovals::approve(const QString& recipeName
                              " WHERE recipe_name = ? AND recipe_checksum <> ? AND superseded = 0"));
     q.addBindValue(recipeName);
     q.addBindValue(checksum);
-    if (!run(q, error))
+    if (!ResultDatabase::run(q, error))
         return fail();
     RecipeApproval a;
     a.id = QUuid::createUuid().toString(QUuid::WithoutBraces);
@@ -104,7 +91,7 @@ std::optional<RecipeApproval> RecipeApprovals::approve(const QString& recipeName
     for (const QString& v : {a.id, a.checksum, a.recipeName, a.revision, a.approver,
                              UnitRecordJson::timeText(a.approved), a.station})
         q.addBindValue(v.isNull() ? QString(QLatin1String("")) : v);
-    if (!run(q, error) || !database_.commit(error))
+    if (!ResultDatabase::run(q, error) || !database_.commit(error))
         return fail();
     return a;
 }

@@ -14,15 +14,6 @@ namespace {
 const char* const kColumns =
     "user_name, display_name, role, password_hash, salt, iterations, active, created_utc";
 
-bool run(QSqlQuery& q, QString* error)
-{
-    if (q.exec())
-        return true;
-    if (error)
-        *error = q.lastError().text();
-    return false;
-}
-
 StationUser userFrom(const QSqlQuery& q)
 {
     StationUser u;
@@ -58,7 +49,7 @@ int UserStore::count(QString* error)
 {
     QSqlQuery q(database_.db());
     q.prepare(QStringLiteral("SELECT COUNT(*) FROM users"));
-    if (!run(q, error) || !q.next())
+    if (!ResultDatabase::run(q, error) || !q.next())
         return -1;
     return q.value(0).toInt();
 }
@@ -68,7 +59,7 @@ int UserStore::activeAdministrators(QString* error)
     QSqlQuery q(database_.db());
     q.prepare(QStringLiteral("SELECT COUNT(*) FROM users WHERE role = ? AND active = 1"));
     q.addBindValue(AccessPolicy::roleKey(Role::Administrator));
-    if (!run(q, error) || !q.next())
+    if (!ResultDatabase::run(q, error) || !q.next())
         return -1;
     return q.value(0).toInt();
 }
@@ -79,7 +70,7 @@ std::optional<StationUser> UserStore::find(const QString& name, QString* error)
     q.prepare(
         QStringLiteral("SELECT %1 FROM users WHERE user_name = ?").arg(QLatin1String(kColumns)));
     q.addBindValue(name);
-    if (!run(q, error))
+    if (!ResultDatabase::run(q, error))
         return std::nullopt;
     if (!q.next()) {
         if (error)
@@ -94,7 +85,7 @@ std::optional<QVector<StationUser>> UserStore::list(QString* error)
     QSqlQuery q(database_.db());
     q.prepare(
         QStringLiteral("SELECT %1 FROM users ORDER BY user_name").arg(QLatin1String(kColumns)));
-    if (!run(q, error))
+    if (!ResultDatabase::run(q, error))
         return std::nullopt;
     QVector<StationUser> users;
     while (q.next())
@@ -116,7 +107,7 @@ bool UserStore::add(const StationUser& u, QString* error)
     q.addBindValue(u.active ? 1 : 0);
     q.addBindValue(UnitRecordJson::timeText(u.created.isValid() ? u.created
                                                                 : QDateTime::currentDateTimeUtc()));
-    return run(q, error);
+    return ResultDatabase::run(q, error);
 }
 
 bool UserStore::setActive(const QString& name, bool active, QString* error)
@@ -125,7 +116,7 @@ bool UserStore::setActive(const QString& name, bool active, QString* error)
     q.prepare(QStringLiteral("UPDATE users SET active = ? WHERE user_name = ?"));
     q.addBindValue(active ? 1 : 0);
     q.addBindValue(name);
-    return run(q, error);
+    return ResultDatabase::run(q, error);
 }
 
 bool UserStore::setPassword(const QString& name, const PasswordHash& p, QString* error)
@@ -137,7 +128,7 @@ bool UserStore::setPassword(const QString& name, const PasswordHash& p, QString*
     q.addBindValue(QString::fromLatin1(p.salt));
     q.addBindValue(p.iterations);
     q.addBindValue(name);
-    return run(q, error);
+    return ResultDatabase::run(q, error);
 }
 
 } // namespace opentop

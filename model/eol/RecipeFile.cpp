@@ -27,13 +27,14 @@ QByteArray scalar(const QJsonValue& value)
 QStringList orderedKeys(const QJsonObject& object)
 {
     static const char* const order[] = {
-        "format",    "formatVersion", "product",    "revision",     "description",  "machineNumber",
-        "name",      "family",        "variants",   "variantProof", "firmware",     "type",
-        "parameter", "statistic",     "spno",       "speed",        "direction",    "target",
-        "tolerance", "value",         "min",        "max",          "lower",        "upper",
-        "equals",    "unit",          "timeout",    "duration",     "deceleration", "margin",
-        "source",    "settings",      "unitValues", "steps",        "limits",       "positions",
-        "maxAttempts", "passedSerial", "retest",    "checksum"};
+        "format",        "formatVersion", "product",      "revision",     "description",
+        "machineNumber", "name",          "family",       "variants",     "variantProof",
+        "firmware",      "type",          "parameter",    "statistic",    "spno",
+        "speed",         "direction",     "target",       "tolerance",    "value",
+        "min",           "max",           "lower",        "upper",        "equals",
+        "unit",          "timeout",       "duration",     "deceleration", "margin",
+        "source",        "settings",      "unitValues",   "steps",        "limits",
+        "positions",     "maxAttempts",   "passedSerial", "retest",       "checksum"};
     QStringList keys;
     for (const char* k : order) {
         if (object.contains(QLatin1String(k)))

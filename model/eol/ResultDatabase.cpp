@@ -152,4 +152,13 @@ QString ResultDatabase::integrityCheck()
     return query.value(0).toString();
 }
 
+bool ResultDatabase::run(QSqlQuery& query, QString* error)
+{
+    if (query.exec())
+        return true;
+    if (error)
+        *error = query.lastError().text();
+    return false;
+}
+
 } // namespace opentop

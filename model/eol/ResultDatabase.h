@@ -6,6 +6,8 @@
 #include <QSqlDatabase>
 #include <memory>
 
+class QSqlQuery;
+
 namespace opentop {
 
 // An open connection to the results database (docs/eol-results.md), at the program's schema
@@ -47,6 +49,8 @@ public:
     void rollback();
     // Runs one statement (pragmas, tests); *error gets the driver's message.
     bool exec(const QString& sql, QString* error);
+    // Runs a prepared query; false with the driver's message in *error.
+    static bool run(QSqlQuery& query, QString* error);
     // An SQL expression for the database's own clock in seconds since 1970 (leases compare
     // heartbeats by one clock, not by the clocks of the stations that wrote them).
     QString nowSecondsSql() const;

@@ -30,15 +30,6 @@ void bind(QSqlQuery& query, std::initializer_list<QVariant> values)
     }
 }
 
-bool run(QSqlQuery& query, QString* error)
-{
-    if (query.exec())
-        return true;
-    if (error)
-        *error = query.lastError().text();
-    return false;
-}
-
 QDateTime nowUtc()
 {
     // Milliseconds are what the database keeps: the record in memory is what it reads back.
@@ -92,7 +83,7 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
         q.prepare(QStringLiteral("SELECT COUNT(*) FROM units WHERE serial = ? AND"
                                  " recipe_checksum = ? AND status IN ('pass', 'fail')"));
         bind(q, {record.serial, record.recipeChecksum});
-        if (!run(q, error) || !q.next()) {
+        if (!ResultDatabase::run(q, error) || !q.next()) {
             database_.rollback();
             return false;
         }
@@ -129,7 +120,7 @@ bool ResultStore::beginUnit(UnitRecord& record, QString* error)
         q.addBindValue(record.approvalId.isEmpty() ? none : QVariant(record.approvalId));
         q.addBindValue(record.approver.isEmpty() ? none : QVariant(record.approver));
     }
-    if (!run(q, error) || !database_.commit(error)) {
+    if (!ResultDatabase::run(q, error) || !database_.commit(error)) {
         database_.rollback();
         return false;
     }
@@ -143,7 +134,7 @@ bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
     for (const char* table : {"unit_drives", "written_values", "measurements", "unit_traffic"}) {
         q.prepare(QStringLiteral("DELETE FROM %1 WHERE unit_id = ?").arg(QLatin1String(table)));
         q.addBindValue(r.id);
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return false;
     }
     // How a variant was known came with schema 4.
@@ -164,7 +155,7 @@ bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
             q.addBindValue(v.typeId() == QMetaType::QString && v.toString().isNull()
                                ? QVariant(QString(QLatin1String("")))
                                : v);
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return false;
     }
     q.prepare(QStringLiteral(
@@ -175,7 +166,7 @@ bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
         bind(q, {QVariant(r.id), QVariant(i), QVariant(w.machineNumber), QVariant(w.parameter),
                  QVariant(w.label), QVariant(w.value), QVariant(w.written ? 1 : 0),
                  QVariant(w.verified ? 1 : 0), QVariant(w.readBack)});
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return false;
     }
     q.prepare(QStringLiteral(
@@ -186,13 +177,13 @@ bool ResultStore::writeChildren(const UnitRecord& r, QString* error)
         bind(q, {QVariant(r.id), QVariant(i), QVariant(m.machineNumber), QVariant(m.step),
                  QVariant(m.quantity), QVariant(m.value), QVariant(m.unit), numberOrNull(m.lower),
                  numberOrNull(m.upper), QVariant(m.pass ? 1 : 0)});
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return false;
     }
     q.prepare(QStringLiteral("INSERT INTO unit_traffic (unit_id, seq, line) VALUES (?, ?, ?)"));
     for (int i = 0; i < r.traffic.size(); ++i) {
         bind(q, {QVariant(r.id), QVariant(i), QVariant(r.traffic[i])});
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return false;
     }
     return true;
@@ -219,7 +210,7 @@ bool ResultStore::finishUnit(UnitRecord& record, QString* error)
     check.prepare(QStringLiteral("SELECT status, %1 FROM units WHERE unit_id = ?")
                       .arg(hasLeases() ? QStringLiteral("lease_id") : QStringLiteral("NULL")));
     bind(check, {record.id});
-    if (!run(check, error))
+    if (!ResultDatabase::run(check, error))
         return fail();
     QString found;
     QString lease;
@@ -252,7 +243,7 @@ bool ResultStore::finishUnit(UnitRecord& record, QString* error)
         record.status == UnitStatus::Error && !hasAttempts() ? UnitStatus::Aborted : record.status;
     bind(q, {UnitRecordJson::timeText(record.ended), unitStatusName(status), record.failureReason,
              record.operatorName, record.id});
-    if (!run(q, error))
+    if (!ResultDatabase::run(q, error))
         return fail();
     if (q.numRowsAffected() != 1) {
         if (error)
@@ -275,7 +266,7 @@ int ResultStore::markInterrupted(const QString& station, const QDateTime& before
                              " WHERE station = ? AND status = 'running' AND started_utc < ?%1")
                   .arg(hasLeases() ? QStringLiteral(" AND lease_id IS NULL") : QString()));
     bind(q, {interruptedReason(), station, UnitRecordJson::timeText(before)});
-    if (!run(q, error)) {
+    if (!ResultDatabase::run(q, error)) {
         database_.rollback();
         return -1;
     }
@@ -310,7 +301,7 @@ QString ResultStore::statusOf(const QString& unitId, QString* error)
     QSqlQuery q(database_.db());
     q.prepare(QStringLiteral("SELECT status FROM units WHERE unit_id = ?"));
     q.addBindValue(unitId);
-    if (!run(q, error))
+    if (!ResultDatabase::run(q, error))
         return QString();
     return q.next() ? q.value(0).toString() : QString();
 }

@@ -22,7 +22,7 @@ StationAlarmReset::StationAlarmReset(ModbusClient* client, const ProfileRegistry
 void StationAlarmReset::reset(const QVector<int>& machineNumbers, Done done)
 {
     m_done = std::move(done);
-    m_todo = machineNumbers;
+    m_left = machineNumbers;
     m_results.clear();
     QTimer::singleShot(0, this, [this] { next(); });
 }
@@ -41,12 +41,12 @@ void StationAlarmReset::next()
         m_session->deleteLater();
         m_session = nullptr;
     }
-    if (m_todo.isEmpty()) {
+    if (m_left.isEmpty()) {
         if (Done done = std::exchange(m_done, nullptr))
             done(m_results);
         return;
     }
-    const int slave = m_todo.takeFirst();
+    const int slave = m_left.takeFirst();
     Result result;
     result.machineNumber = slave;
     const RecipePosition* position = m_recipe.position(slave);

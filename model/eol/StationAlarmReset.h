@@ -42,7 +42,7 @@ private:
     QPointer<ModbusClient> m_client;
     const ProfileRegistry& m_registry;
     Recipe m_recipe;
-    QVector<int> m_todo;
+    QVector<int> m_left; // machine numbers still to reset
     QVector<Result> m_results;
     DeviceSession* m_session = nullptr;
     Done m_done;

@@ -20,19 +20,6 @@
 
 namespace opentop {
 
-namespace {
-
-bool run(QSqlQuery& q, QString* error)
-{
-    if (q.exec())
-        return true;
-    if (error)
-        *error = q.lastError().text();
-    return false;
-}
-
-} // namespace
-
 StationLease::StationLease(const QString& station, const QString& program)
     : m_id(QUuid::createUuid().toString(QUuid::WithoutBraces))
     , m_station(station)
@@ -68,7 +55,7 @@ bool StationLease::renew(ResultDatabase& db, QString* error)
     q.prepare(QStringLiteral("UPDATE station_leases SET heartbeat_s = %1 WHERE lease_id = ?")
                   .arg(db.nowSecondsSql()));
     q.addBindValue(m_id);
-    if (!run(q, error))
+    if (!ResultDatabase::run(q, error))
         return false;
     if (q.numRowsAffected() == 1)
         return true;
@@ -83,7 +70,7 @@ bool StationLease::renew(ResultDatabase& db, QString* error)
     take.addBindValue(QCoreApplication::applicationPid());
     take.addBindValue(m_program);
     take.addBindValue(UnitRecordJson::timeText(QDateTime::currentDateTimeUtc()));
-    return run(take, error);
+    return ResultDatabase::run(take, error);
 }
 
 bool StationLease::end(ResultDatabase& db, QString* error)
@@ -91,7 +78,7 @@ bool StationLease::end(ResultDatabase& db, QString* error)
     QSqlQuery q(db.db());
     q.prepare(QStringLiteral("DELETE FROM station_leases WHERE lease_id = ?"));
     q.addBindValue(m_id);
-    return run(q, error);
+    return ResultDatabase::run(q, error);
 }
 
 bool StationLease::sweep(ResultDatabase& db, QVector<Leftover>* leftovers, QString* error)
@@ -111,7 +98,7 @@ bool StationLease::sweep(ResultDatabase& db, QVector<Leftover>* leftovers, QStri
                       .arg(db.nowSecondsSql())
                       .arg(kLifetimeS));
         q.addBindValue(m_id);
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return fail();
         while (q.next()) {
             const bool stale = q.value(3).toInt() != 0;
@@ -139,7 +126,7 @@ bool StationLease::sweep(ResultDatabase& db, QVector<Leftover>* leftovers, QStri
                                  " FROM units WHERE status = 'running' AND lease_id IS NOT NULL"
                                  " AND lease_id <> ?"));
         q.addBindValue(m_id);
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return fail();
         while (q.next()) {
             const QString lease = q.value(4).toString();
@@ -154,14 +141,14 @@ bool StationLease::sweep(ResultDatabase& db, QVector<Leftover>* leftovers, QStri
                                  " WHERE unit_id = ? AND status = 'running'"));
         q.addBindValue(ResultStore::interruptedReason());
         q.addBindValue(l.unitId);
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return fail();
     }
     for (const QString& lease : dead) {
         QSqlQuery q(db.db());
         q.prepare(QStringLiteral("DELETE FROM station_leases WHERE lease_id = ?"));
         q.addBindValue(lease);
-        if (!run(q, error))
+        if (!ResultDatabase::run(q, error))
             return fail();
     }
     if (!db.commit(error))

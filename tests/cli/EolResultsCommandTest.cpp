@@ -172,14 +172,16 @@ TEST_F(EolResultsCommand, YieldPerRecipeAndShiftWithFailureReasons)
     bool found = false;
     for (const QString& line : r.out.split(QLatin1Char('\n'))) {
         if (line.startsWith(QStringLiteral("pump A")) && !found) {
-            EXPECT_EQ(line.simplified(),
-                      QStringLiteral("pump A rev. 7b 2 1 (50.0 %) 2 (100.0 %) 2 (100.0 %) 2 1 0 1"));
+            EXPECT_EQ(
+                line.simplified(),
+                QStringLiteral("pump A rev. 7b 2 1 (50.0 %) 2 (100.0 %) 2 (100.0 %) 2 1 0 1"));
             found = true;
         }
     }
     EXPECT_TRUE(found) << qPrintable(r.out);
     EXPECT_TRUE(r.out.contains(QStringLiteral("Per shift"))) << qPrintable(r.out);
-    EXPECT_TRUE(r.out.contains(QStringLiteral("pump A rev. 7b: drive 2: speed min 1203 r/min below")))
+    EXPECT_TRUE(
+        r.out.contains(QStringLiteral("pump A rev. 7b: drive 2: speed min 1203 r/min below")))
         << qPrintable(r.out);
     const int stationPart = r.out.indexOf(QStringLiteral("Station errors (not counted in yield)"));
     ASSERT_GT(stationPart, 0) << qPrintable(r.out);
@@ -189,7 +191,8 @@ TEST_F(EolResultsCommand, YieldPerRecipeAndShiftWithFailureReasons)
 
     r = results({QStringLiteral("--yield"), QStringLiteral("--csv")});
     ASSERT_EQ(r.code, ExitOk) << qPrintable(r.err);
-    EXPECT_TRUE(r.out.startsWith(QStringLiteral("recipe,revision,checksum,shift,serials,first_pass,")))
+    EXPECT_TRUE(
+        r.out.startsWith(QStringLiteral("recipe,revision,checksum,shift,serials,first_pass,")))
         << qPrintable(r.out);
     EXPECT_TRUE(r.out.contains(QStringLiteral(",,0,0,0,0,0,0,0,1,0,0,1,0,station,cancelled by the "
                                               "operator,1")))

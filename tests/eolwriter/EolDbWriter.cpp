@@ -26,8 +26,8 @@ UnitRecord unit(const QString& station, const QString& serial, int i)
     r.recipeRevision = QStringLiteral("3");
     r.recipeChecksum = QStringLiteral("sha256:0011");
     for (int m : {1, 2})
-        r.drives.append({m, QStringLiteral("DBU"), QStringLiteral("DBU200"),
-                         QStringLiteral("1.07"), VariantSource::Assumed, QString()});
+        r.drives.append({m, QStringLiteral("DBU"), QStringLiteral("DBU200"), QStringLiteral("1.07"),
+                         VariantSource::Assumed, QString()});
     for (int k = 0; k < 3; ++k)
         r.writtenValues.append({1 + k % 2, QStringLiteral("spno%1.speed").arg(k),
                                 QStringLiteral("Speed %1").arg(k),
