@@ -5,6 +5,7 @@
 #include "ExitCode.h"
 #include "FileCommandSupport.h"
 #include "ModbusClient.h"
+#include "eol/GoldenMeasure.h"
 #include "eol/RecipeBuilder.h"
 #include "eol/RecipeFile.h"
 #include "eol/VariantCheck.h"
@@ -16,8 +17,11 @@
 #include "session/DeviceSession.h"
 
 #include <QCoreApplication>
+#include <QEventLoop>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonObject>
+#include <QTimer>
 
 namespace opentop {
 
@@ -48,6 +52,14 @@ QList<QCommandLineOption> EolRecipeCreateCommand::options() const
         {QStringLiteral("revision"), tr("recipe create: the recipe's revision."), tr("REV")},
         EolSupport::outputOption(),
         {QStringLiteral("force"), tr("recipe create: replace an existing recipe file.")},
+        {QStringLiteral("measure"),
+         tr("recipe create --drives: run the golden unit through the recipe's steps once (its "
+            "motors turn) and take the hold limits from what it measured.")},
+        {QStringLiteral("margin"),
+         tr("recipe create --measure: the margin around a measured value, in % of it (default "
+            "25; at least 5 % of the parameter's full scale)."),
+         tr("PERCENT")},
+        {QStringLiteral("yes"), tr("recipe create --measure: run the motors.")},
     };
 }
 
@@ -137,6 +149,84 @@ std::optional<QVector<BackupDevice>> EolRecipeCreateCommand::readDrives(CliConte
     return devices;
 }
 
+bool EolRecipeCreateCommand::measure(CliContext& context, Recipe* recipe, double margin,
+                                     int* exitCode, QJsonArray* limits)
+{
+    QTextStream& err = context.err();
+    const QStringList motion = GoldenMeasure::motionText(*recipe);
+    if (!context.parser().isSet(QStringLiteral("yes"))) {
+        err << tr("Would run the golden unit through the recipe's steps:") << Qt::endl;
+        for (const QString& line : motion)
+            err << QStringLiteral("  ") << line << Qt::endl;
+        err << tr("This turns motors: add --yes to run them. Nothing was run; nothing written.")
+            << Qt::endl;
+        *exitCode = ExitUsage;
+        return false;
+    }
+    err << tr("measuring the golden unit (Ctrl-C stops every motor):") << Qt::endl;
+    for (const QString& line : motion)
+        err << QStringLiteral("  ") << line << Qt::endl;
+    GoldenLimits::Margin m;
+    m.relative = margin / 100.0;
+    GoldenMeasure run(context.client(), ProfileRegistry::builtIn(), *recipe, m);
+    QObject::connect(&run, &GoldenMeasure::phaseChanged, &run,
+                     [&err](int machineNumber, EolDriveRun::Phase, const QString& text) {
+                         err << tr("drive %1: %2").arg(machineNumber).arg(text) << Qt::endl;
+                     });
+    QObject::connect(context.client(), &ModbusClient::connectionLost, &run,
+                     [&run](const QString& why) { run.connectionLost(why); });
+    GoldenMeasure::Outcome outcome;
+    QEventLoop loop;
+    QTimer interrupt;
+    bool interrupted = false;
+    QObject::connect(&interrupt, &QTimer::timeout, &loop, [&] {
+        if (context.interrupted() && !interrupted) {
+            interrupted = true;
+            run.cancel(tr("interrupted"));
+        }
+    });
+    interrupt.start(50);
+    bool finished = false;
+    run.start(EolStepRunner::Timing(), [&](const GoldenMeasure::Outcome& o) {
+        outcome = o;
+        finished = true;
+        loop.quit();
+    });
+    if (!finished)
+        loop.exec();
+    for (const QString& d : outcome.unconfirmedStops)
+        err << tr("WARNING: %1 is not confirmed stopped").arg(d) << Qt::endl;
+    if (!outcome.ok) {
+        err << tr("error: %1; nothing written").arg(outcome.error) << Qt::endl;
+        *exitCode = interrupted                                 ? ExitInterrupted
+                    : outcome.record.status == UnitStatus::Fail ? ExitFail
+                                                                : ExitCommunication;
+        return false;
+    }
+    if (!context.json())
+        context.out() << tr("limits from the golden unit:") << Qt::endl;
+    auto bound = [](const std::optional<double>& v) { return v ? QJsonValue(*v) : QJsonValue(); };
+    for (const GoldenLimits::Change& c : outcome.limits.changes) {
+        if (!context.json())
+            context.out() << tr("  drive %1, step %2: %3")
+                                 .arg(c.machineNumber)
+                                 .arg(c.step + 1)
+                                 .arg(GoldenLimits::changeText(c))
+                          << Qt::endl;
+        limits->append(QJsonObject{{QStringLiteral("machineNumber"), c.machineNumber},
+                                   {QStringLiteral("step"), c.step + 1},
+                                   {QStringLiteral("quantity"), c.quantity},
+                                   {QStringLiteral("measured"), c.measured},
+                                   {QStringLiteral("unit"), c.unit},
+                                   {QStringLiteral("lower"), bound(c.after.lower)},
+                                   {QStringLiteral("upper"), bound(c.after.upper)},
+                                   {QStringLiteral("defaultLower"), bound(c.before.lower)},
+                                   {QStringLiteral("defaultUpper"), bound(c.before.upper)}});
+    }
+    *recipe = outcome.limits.recipe;
+    return true;
+}
+
 int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
 {
     const QCommandLineParser& parser = context.parser();
@@ -150,6 +240,19 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
     const bool fromDrives = parser.isSet(QStringLiteral("drives"));
     if (fromBackup == fromDrives)
         return usage(tr("give either --from-backup FILE or --drives LIST"));
+    const bool measuring = parser.isSet(QStringLiteral("measure"));
+    if (measuring && !fromDrives)
+        return usage(tr("--measure needs the golden unit on the bus: give --drives LIST"));
+    double margin = 25;
+    if (parser.isSet(QStringLiteral("margin"))) {
+        bool ok = false;
+        margin = parser.value(QStringLiteral("margin")).toDouble(&ok);
+        if (!measuring)
+            return usage(tr("--margin is for --measure"));
+        if (!ok || margin < 1 || margin > 100)
+            return usage(tr("--margin %1: give a percentage from 1 to 100")
+                             .arg(parser.value(QStringLiteral("margin"))));
+    }
     const QString product = parser.value(QStringLiteral("product")).trimmed();
     const QString revision = parser.value(QStringLiteral("revision")).trimmed();
     if (product.isEmpty())
@@ -173,6 +276,7 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
     QString error;
     std::optional<Recipe> recipe;
     int code = ExitOk;
+    QJsonArray measured; // the limits --measure derived
     if (fromBackup) {
         const std::optional<BackupFile> file =
             FileCommandSupport::load(context, parser.value(QStringLiteral("from-backup")), &code);
@@ -195,6 +299,8 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
         if (recipe && !notes.isEmpty())
             recipe->description =
                 tr("Made from a golden unit; variants: %1.").arg(notes.join(QStringLiteral("; ")));
+        if (recipe && measuring && !measure(context, &*recipe, margin, &code, &measured))
+            return code;
     }
     if (!recipe) {
         context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;
@@ -219,6 +325,7 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
                       {QStringLiteral("settings"), EolSupport::settingCount(*recipe)},
                       {QStringLiteral("steps"), EolSupport::stepCount(*recipe)},
                       {QStringLiteral("valid"), problems.isEmpty()},
+                      {QStringLiteral("measuredLimits"), measured},
                       {QStringLiteral("problems"), EolSupport::problemsJson(problems)}});
     } else {
         context.out() << tr("wrote %1: %2 revision %3, %4")

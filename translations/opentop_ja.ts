@@ -5340,17 +5340,17 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>&amp;Recipe editor…</source>
         <translation>レシピエディタ(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="51"/>
         <source>the recipe editor</source>
         <translation>レシピエディタ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="57"/>
         <source>Re&amp;sults…</source>
         <translation>結果(&amp;S)…</translation>
     </message>
@@ -5453,158 +5453,234 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="35"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>マスター品からレシピを作成します: バックアップファイルまたはバス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="41"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: マスター品のバックアップファイル。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: バス上のマスター品のドライバ。例: 1,2（接続オプションと併用）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 製品名。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: レシピのリビジョン。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 既存のレシピファイルを置き換えます。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="64"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
+        <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
+        <translation>recipe create --drives: マスター品をレシピのステップどおりに一度運転し (モータが回転します)、測定値から保持ステップの判定値を決めます。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
+        <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
+        <translation>recipe create --measure: 測定値の前後に取る余裕。測定値に対する % (既定 25、最小でもパラメータのフルスケールの 5 %)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <source>PERCENT</source>
+        <translation>パーセント</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
+        <source>recipe create --measure: run the motors.</source>
+        <translation>recipe create --measure: モータの運転を確認します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
         <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="306"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
         <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
         <translation>エラー: 局番 %1: %2。機種が分かっていれば --variant %1=機種 で指定してください。何も書き込んでいない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
         <source>machine number %1: %2, %3 (%4)</source>
         <translation>局番 %1: %2、%3（%4）</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="127"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="122"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="134"/>
         <source>error: %1: cannot read %2</source>
         <translation>エラー: %1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="137"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>エラー: %1 にプロファイルで許可されていない値があります: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="140"/>
         <source>nothing written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="145"/>
         <source>%1: %2 settings read</source>
         <translation>%1: %2 個の設定を読出し</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <source>Would run the golden unit through the recipe&apos;s steps:</source>
+        <translation>マスター品をレシピのステップどおりに運転します:</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
+        <translation>モータが回転します。運転するには --yes を付けてください。何も運転せず、何も書き込んでいません。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="166"/>
+        <source>measuring the golden unit (Ctrl-C stops every motor):</source>
+        <translation>マスター品を測定中 (Ctrl-C で全モータ停止):</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="174"/>
+        <source>drive %1: %2</source>
+        <translation>ドライバ %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <source>interrupted</source>
+        <translation>中断</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="198"/>
+        <source>WARNING: %1 is not confirmed stopped</source>
+        <translation>警告: %1 の停止を確認できていません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <source>limits from the golden unit:</source>
+        <translation>マスター品から決めた判定値:</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="211"/>
+        <source>  drive %1, step %2: %3</source>
+        <translation>  ドライバ %1、ステップ %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="234"/>
         <source>error: %1; usage: eol %2</source>
         <translation>エラー: %1。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="148"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="238"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>予期しない引数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="152"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="242"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE または --drives LIST のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="156"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="245"/>
+        <source>--measure needs the golden unit on the bus: give --drives LIST</source>
+        <translation>--measure にはバス上のマスター品が必要です: --drives で一覧を指定してください</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="251"/>
+        <source>--margin is for --measure</source>
+        <translation>--margin は --measure と併用します</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
+        <source>--margin %1: give a percentage from 1 to 100</source>
+        <translation>--margin %1: 1 から 100 のパーセントを指定してください</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="259"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME で製品名を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV でレシピのリビジョンを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="264"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE で書き込むレシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="164"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="267"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>エラー: %1 は既に存在します。置き換えるには --force を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="289"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="197"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="301"/>
         <source>Made from a golden unit; variants: %1.</source>
         <translation>マスター品から作成。機種: %1。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="313"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="224"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="331"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 を書き込みました: %2 リビジョン %3、%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="338"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>エラー: レシピが &quot;eol recipe check&quot; に合格しません: 修正してから &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
@@ -7506,6 +7582,171 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>10 進</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenLimits</name>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="67"/>
+        <source>the golden unit did not pass its own test (%1): no limits can come from it</source>
+        <translation>マスター品が自身の検査に合格しませんでした (%1): 判定値を決められません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="75"/>
+        <source>machine number %1: unknown family &quot;%2&quot;</source>
+        <translation>局番 %1: 不明な機種ファミリ「%2」</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="94"/>
+        <source>machine number %1: unknown parameter &quot;%2&quot;</source>
+        <translation>局番 %1: 不明なパラメータ「%2」</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="104"/>
+        <source>machine number %1: the golden unit&apos;s %2 was not measured</source>
+        <translation>局番 %1: マスター品の %2 が測定されていません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="129"/>
+        <source>Hold limits measured on the golden unit on %1: the measured value ± %2 % (at least %3 % of full scale), never wider than the default limits.</source>
+        <translation>保持ステップの判定値は %1 にマスター品で測定: 測定値 ± %2 % (最小でもフルスケールの %3 %)、既定の判定値より広げません。</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="140"/>
+        <source>%1–%2%3</source>
+        <translation>%1–%2%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="142"/>
+        <source>≤ %1%2</source>
+        <translation>≤ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="144"/>
+        <source>≥ %1%2</source>
+        <translation>≥ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="145"/>
+        <source>no limit</source>
+        <translation>判定値なし</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="153"/>
+        <source>%1 %2 (kept: measured %3)</source>
+        <translation>%1 %2 (変更なし: 測定値 %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="155"/>
+        <source>%1 %2 (default %3, measured %4)</source>
+        <translation>%1 %2 (既定 %3、測定値 %4)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasure</name>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="31"/>
+        <source>machine number %1 (%2): runs its motor for about %3 s: %4</source>
+        <translation>局番 %1 (%2): モータを約 %3 s 運転します: %4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="43"/>
+        <source>golden unit</source>
+        <translation>マスター品</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="44"/>
+        <source>recipe from a golden unit</source>
+        <translation>マスター品からのレシピ作成</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasureButton</name>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <source>Measure limits…</source>
+        <translation>判定値を測定…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
+        <translation>バス上のマスター品をレシピのステップどおりに一度運転し、測定値から保持ステップの判定値を決めます: 測定値 ± 25 % (最小でもフルスケールの 5 %)、元の判定値より広げません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <source>Measure limits on the golden unit</source>
+        <translation>マスター品で判定値を測定</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <source>The recipe has no positions.</source>
+        <translation>レシピにポジションがありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <source>The recipe cannot be read: %1</source>
+        <translation>レシピを読み取れません: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
+        <translation>局番 %1 はバス上のドライバではありません: 先にマスター品に接続してスキャンしてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
+        <translation>マスター品をレシピのステップどおりに運転しますか? 次のモータが回転します:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <source>Run the motors</source>
+        <translation>モータを運転</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <source>The bus is not connected.</source>
+        <translation>バスが接続されていません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Measuring the golden unit…</source>
+        <translation>マスター品を測定中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="96"/>
+        <source>stopped by the user</source>
+        <translation>ユーザーが停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="99"/>
+        <source>Machine number %1: %2</source>
+        <translation>局番 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="109"/>
+        <source>%1 is not confirmed stopped.</source>
+        <translation>%1 の停止を確認できていません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="111"/>
+        <source>No limits were taken: %1</source>
+        <translation>判定値は決められませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="118"/>
+        <source>Machine number %1, step %2: %3</source>
+        <translation>局番 %1、ステップ %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
+        <translation>保持ステップの判定値をマスター品に合わせました。確認してからレシピを保存してください。</translation>
     </message>
 </context>
 <context>
@@ -10055,6 +10296,30 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::ProbeJournal</name>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="32"/>
+        <source>%1 is not a probe journal (%2): ignored; a probe interrupted before may have left its value on a drive</source>
+        <translation>%1 は判定の記録ファイルではありません (%2): 無視します。以前に中断した判定の値がドライバに残っている可能性があります</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="41"/>
+        <source>cannot create the folder of %1</source>
+        <translation>%1 のフォルダを作成できません</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="47"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 に書き込めません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="83"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="97"/>
+        <source>%1 is locked by another program</source>
+        <translation>%1 は別のプログラムがロックしています</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProductionMode</name>
     <message>
         <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
@@ -10817,12 +11082,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApprovals</name>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="19"/>
         <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
         <translation>レシピ &quot;%1&quot; rev. %2 は下書きです: この版 (チェックサム) は承認されていないため実行されません。エンジニアが承認します (レシピエディタの「承認…」、または opentop-cli eol recipe approve FILE --user NAME)。</translation>
     </message>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="56"/>
         <source>a recipe without a checksum cannot be approved: sign it first</source>
         <translation>チェックサムのないレシピは承認できません: 先に署名してください</translation>
     </message>
@@ -11283,12 +11548,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="263"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 は %2 MB を超えています（レシピファイルの上限）。レシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="271"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -12943,32 +13208,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="72"/>
+        <location filename="../model/eol/ResultStore.cpp" line="63"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>中断: 製品の試験が終わる前にステーションが停止しました（強制終了、停電、クラッシュ）。製品は検証されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="80"/>
+        <location filename="../model/eol/ResultStore.cpp" line="71"/>
         <source>a unit needs a serial number</source>
         <translation>製品にはシリアル番号が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="205"/>
+        <location filename="../model/eol/ResultStore.cpp" line="196"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>製品の終了は pass、fail、error、aborted のいずれかで、%1 は使えません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="235"/>
+        <location filename="../model/eol/ResultStore.cpp" line="226"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>製品 %1（シリアル %2）は結果データベースで開始されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="237"/>
+        <location filename="../model/eol/ResultStore.cpp" line="228"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>製品 %1（シリアル %2）はすでに %3 として記録されています。その記録を保持します</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="259"/>
+        <location filename="../model/eol/ResultStore.cpp" line="250"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>製品 %1（シリアル %2）は結果データベースで実行中ではありません: 開始されていないか、すでに終了または中断としてマークされています</translation>
     </message>
@@ -18052,7 +18317,7 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserStore</name>
     <message>
-        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <location filename="../model/access/UserStore.cpp" line="43"/>
         <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
         <translation>ユーザー名は 1〜64 文字の英字、数字、. _ @ - です (空白なし): &quot;%1&quot;</translation>
     </message>
@@ -18317,37 +18582,53 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::VariantProber</name>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="30"/>
+        <location filename="../model/session/VariantProber.cpp" line="47"/>
+        <location filename="../model/session/VariantProber.cpp" line="85"/>
         <source>%1 cannot be read: %2</source>
         <translation>%1 を読み出せない: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="59"/>
+        <location filename="../model/session/VariantProber.cpp" line="63"/>
+        <source>%1 still holds %2 from a variant probe that was interrupted, and cannot be set back to %3 (%4): set it to %3 before this drive is used</source>
+        <translation>%1 に中断した機種判定の %2 が残っており、%3 に戻せません (%4): このドライバを使う前に %3 に設定してください</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="71"/>
+        <source>%1 set back from %2 to %3, left by a variant probe that was interrupted</source>
+        <translation>%1 を %2 から %3 に戻しました (中断した機種判定が残した値)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="102"/>
+        <source>not probed: the original value cannot be kept while it is (%1)</source>
+        <translation>判定していません: 判定中に元の値を保存できません (%1)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="123"/>
         <source>the probe %1 was not answered as the manual says: %2</source>
         <translation>機種判定 %1 への応答がマニュアルどおりでない: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="83"/>
+        <location filename="../model/session/VariantProber.cpp" line="147"/>
         <source>%1 could not be set back to %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>機種判定の後、%1 を %2 に戻せなかった（%3）: このドライバを使う前に %2 に設定してください</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="88"/>
+        <location filename="../model/session/VariantProber.cpp" line="152"/>
         <source>%1 accepted, %2 written back</source>
         <translation>%1 を受付、%2 に書き戻し済み</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="96"/>
+        <location filename="../model/session/VariantProber.cpp" line="160"/>
         <source>%1 refused (%2)</source>
         <translation>%1 を拒否（%2）</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="106"/>
+        <location filename="../model/session/VariantProber.cpp" line="171"/>
         <source>%1 does not read back as %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>機種判定の後、%1 の読出し値が %2 でない（%3）: このドライバを使う前に %2 に設定してください</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="113"/>
+        <location filename="../model/session/VariantProber.cpp" line="181"/>
         <source>the probe did not decide</source>
         <translation>判定できなかった</translation>
     </message>

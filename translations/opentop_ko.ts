@@ -5340,17 +5340,17 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>&amp;Recipe editor…</source>
         <translation>레시피 편집기(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="51"/>
         <source>the recipe editor</source>
         <translation>레시피 편집기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="57"/>
         <source>Re&amp;sults…</source>
         <translation>결과(&amp;S)…</translation>
     </message>
@@ -5453,158 +5453,234 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="35"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>기준 제품(골든 유닛)으로 레시피를 만듭니다: 백업 파일 또는 버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="41"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: 기준 제품의 백업 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: 버스에 있는 기준 제품의 드라이버, 예: 1,2 (연결 옵션과 함께).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 제품 이름.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: 레시피 개정.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 기존 레시피 파일을 교체합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="64"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
+        <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
+        <translation>recipe create --drives: 기준 제품을 레시피 단계대로 한 번 운전하고(모터가 회전합니다) 측정값으로 유지 단계의 한계값을 정합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
+        <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
+        <translation>recipe create --measure: 측정값 주위의 여유, 측정값의 %로 지정 (기본 25, 최소 해당 파라미터 풀스케일의 5 %).</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <source>PERCENT</source>
+        <translation>퍼센트</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
+        <source>recipe create --measure: run the motors.</source>
+        <translation>recipe create --measure: 모터 운전을 확인합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
         <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="306"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
         <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
         <translation>오류: 국번 %1: %2. 기종을 알면 --variant %1=기종 으로 지정하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
         <source>machine number %1: %2, %3 (%4)</source>
         <translation>국번 %1: %2, %3 (%4)</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="127"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="122"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="134"/>
         <source>error: %1: cannot read %2</source>
         <translation>오류: %1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="137"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>오류: %1에 프로파일이 허용하지 않는 값이 있습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="140"/>
         <source>nothing written</source>
         <translation>아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="145"/>
         <source>%1: %2 settings read</source>
         <translation>%1: 설정 %2개 읽음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <source>Would run the golden unit through the recipe&apos;s steps:</source>
+        <translation>기준 제품을 레시피 단계대로 운전하려고 합니다:</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
+        <translation>모터가 회전합니다. 운전하려면 --yes를 붙이십시오. 아무것도 운전하지 않았고 아무것도 저장하지 않았습니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="166"/>
+        <source>measuring the golden unit (Ctrl-C stops every motor):</source>
+        <translation>기준 제품 측정 중 (Ctrl-C로 모든 모터 정지):</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="174"/>
+        <source>drive %1: %2</source>
+        <translation>드라이버 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <source>interrupted</source>
+        <translation>중단됨</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="198"/>
+        <source>WARNING: %1 is not confirmed stopped</source>
+        <translation>경고: %1의 정지가 확인되지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <source>limits from the golden unit:</source>
+        <translation>기준 제품으로 정한 한계값:</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="211"/>
+        <source>  drive %1, step %2: %3</source>
+        <translation>  드라이버 %1, 단계 %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="234"/>
         <source>error: %1; usage: eol %2</source>
         <translation>오류: %1; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="148"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="238"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>예상치 못한 인수 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="152"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="242"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE 또는 --drives LIST 중 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="156"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="245"/>
+        <source>--measure needs the golden unit on the bus: give --drives LIST</source>
+        <translation>--measure에는 버스에 연결된 기준 제품이 필요합니다: --drives 목록을 지정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="251"/>
+        <source>--margin is for --measure</source>
+        <translation>--margin은 --measure와 함께 씁니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
+        <source>--margin %1: give a percentage from 1 to 100</source>
+        <translation>--margin %1: 1에서 100 사이의 퍼센트를 지정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="259"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME으로 제품 이름을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV로 레시피 개정을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="264"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE로 저장할 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="164"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="267"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>오류: %1이(가) 이미 있습니다. 교체하려면 --force를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="289"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="197"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="301"/>
         <source>Made from a golden unit; variants: %1.</source>
         <translation>기준 제품으로 만듦. 기종: %1.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="313"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="224"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="331"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 저장함: %2 개정 %3, %4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="338"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>오류: 레시피가 &quot;eol recipe check&quot;를 통과하지 못합니다. 수정한 뒤 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
@@ -7506,6 +7582,171 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>10진수</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenLimits</name>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="67"/>
+        <source>the golden unit did not pass its own test (%1): no limits can come from it</source>
+        <translation>기준 제품이 자체 검사에 합격하지 못했습니다(%1): 이 제품으로는 한계값을 정할 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="75"/>
+        <source>machine number %1: unknown family &quot;%2&quot;</source>
+        <translation>국번 %1: 알 수 없는 제품군 &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="94"/>
+        <source>machine number %1: unknown parameter &quot;%2&quot;</source>
+        <translation>국번 %1: 알 수 없는 파라미터 &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="104"/>
+        <source>machine number %1: the golden unit&apos;s %2 was not measured</source>
+        <translation>국번 %1: 기준 제품의 %2을(를) 측정하지 못했습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="129"/>
+        <source>Hold limits measured on the golden unit on %1: the measured value ± %2 % (at least %3 % of full scale), never wider than the default limits.</source>
+        <translation>유지 단계의 한계값은 %1에 기준 제품에서 측정: 측정값 ± %2 % (최소 풀스케일의 %3 %), 기본 한계값보다 넓지 않음.</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="140"/>
+        <source>%1–%2%3</source>
+        <translation>%1–%2%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="142"/>
+        <source>≤ %1%2</source>
+        <translation>≤ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="144"/>
+        <source>≥ %1%2</source>
+        <translation>≥ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="145"/>
+        <source>no limit</source>
+        <translation>한계값 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="153"/>
+        <source>%1 %2 (kept: measured %3)</source>
+        <translation>%1 %2 (유지: 측정값 %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="155"/>
+        <source>%1 %2 (default %3, measured %4)</source>
+        <translation>%1 %2 (기본 %3, 측정값 %4)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasure</name>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="31"/>
+        <source>machine number %1 (%2): runs its motor for about %3 s: %4</source>
+        <translation>국번 %1 (%2): 모터를 약 %3 s 운전합니다: %4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="43"/>
+        <source>golden unit</source>
+        <translation>기준 제품</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="44"/>
+        <source>recipe from a golden unit</source>
+        <translation>기준 제품으로 만드는 레시피</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasureButton</name>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <source>Measure limits…</source>
+        <translation>한계값 측정…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
+        <translation>버스의 기준 제품을 레시피 단계대로 한 번 운전하고 측정값으로 유지 단계의 한계값을 정합니다: 측정값 ± 25 % (최소 풀스케일의 5 %), 기존 한계값보다 넓지 않음</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <source>Measure limits on the golden unit</source>
+        <translation>기준 제품으로 한계값 측정</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <source>The recipe has no positions.</source>
+        <translation>레시피에 위치가 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <source>The recipe cannot be read: %1</source>
+        <translation>레시피를 읽을 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
+        <translation>국번 %1은(는) 버스에 있는 드라이버가 아닙니다: 먼저 기준 제품에 연결하고 스캔하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
+        <translation>기준 제품을 레시피 단계대로 운전하시겠습니까? 다음 모터가 회전합니다:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <source>Run the motors</source>
+        <translation>모터 운전</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <source>The bus is not connected.</source>
+        <translation>버스가 연결되어 있지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Measuring the golden unit…</source>
+        <translation>기준 제품 측정 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Stop</source>
+        <translation>정지</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="96"/>
+        <source>stopped by the user</source>
+        <translation>사용자가 정지함</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="99"/>
+        <source>Machine number %1: %2</source>
+        <translation>국번 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="109"/>
+        <source>%1 is not confirmed stopped.</source>
+        <translation>%1의 정지가 확인되지 않았습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="111"/>
+        <source>No limits were taken: %1</source>
+        <translation>한계값을 정하지 않았습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="118"/>
+        <source>Machine number %1, step %2: %3</source>
+        <translation>국번 %1, 단계 %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
+        <translation>유지 단계의 한계값을 기준 제품에 맞췄습니다. 확인한 뒤 레시피를 저장하십시오.</translation>
     </message>
 </context>
 <context>
@@ -10055,6 +10296,30 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::ProbeJournal</name>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="32"/>
+        <source>%1 is not a probe journal (%2): ignored; a probe interrupted before may have left its value on a drive</source>
+        <translation>%1은(는) 확인 기록 파일이 아닙니다(%2): 무시합니다. 이전에 중단된 확인이 드라이버에 값을 남겼을 수 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="41"/>
+        <source>cannot create the folder of %1</source>
+        <translation>%1의 폴더를 만들 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="47"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1에 쓸 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="83"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="97"/>
+        <source>%1 is locked by another program</source>
+        <translation>%1을(를) 다른 프로그램이 잠그고 있습니다</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProductionMode</name>
     <message>
         <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
@@ -10817,12 +11082,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApprovals</name>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="19"/>
         <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
         <translation>레시피 &quot;%1&quot; rev. %2는 초안입니다: 이 버전(체크섬)은 승인되지 않아 실행되지 않습니다. 엔지니어가 승인합니다(레시피 편집기의 승인… 또는 opentop-cli eol recipe approve FILE --user NAME).</translation>
     </message>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="56"/>
         <source>a recipe without a checksum cannot be approved: sign it first</source>
         <translation>체크섬이 없는 레시피는 승인할 수 없습니다: 먼저 서명하십시오</translation>
     </message>
@@ -11283,12 +11548,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="263"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1이(가) 레시피 파일의 최대 크기 %2 MB보다 큽니다. 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="271"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -12943,32 +13208,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="72"/>
+        <location filename="../model/eol/ResultStore.cpp" line="63"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>중단됨: 제품이 끝나기 전에 스테이션이 멈췄습니다(강제 종료, 정전 또는 비정상 종료). 제품은 검증되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="80"/>
+        <location filename="../model/eol/ResultStore.cpp" line="71"/>
         <source>a unit needs a serial number</source>
         <translation>제품에는 시리얼 번호가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="205"/>
+        <location filename="../model/eol/ResultStore.cpp" line="196"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>제품은 %1이(가) 아니라 pass, fail, error 또는 aborted로 끝나야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="235"/>
+        <location filename="../model/eol/ResultStore.cpp" line="226"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 시작된 적이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="237"/>
+        <location filename="../model/eol/ResultStore.cpp" line="228"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>제품 %1(시리얼 %2)은(는) 이미 %3(으)로 기록되어 있습니다. 기존 기록을 유지합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="259"/>
+        <location filename="../model/eol/ResultStore.cpp" line="250"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 진행 중이 아닙니다: 시작된 적이 없거나, 이미 끝났거나, 중단됨으로 표시되었습니다</translation>
     </message>
@@ -18052,7 +18317,7 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserStore</name>
     <message>
-        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <location filename="../model/access/UserStore.cpp" line="43"/>
         <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
         <translation>사용자 이름은 1~64자의 영문자, 숫자 또는 . _ @ -입니다(공백 없음): &quot;%1&quot;</translation>
     </message>
@@ -18317,37 +18582,53 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::VariantProber</name>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="30"/>
+        <location filename="../model/session/VariantProber.cpp" line="47"/>
+        <location filename="../model/session/VariantProber.cpp" line="85"/>
         <source>%1 cannot be read: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="59"/>
+        <location filename="../model/session/VariantProber.cpp" line="63"/>
+        <source>%1 still holds %2 from a variant probe that was interrupted, and cannot be set back to %3 (%4): set it to %3 before this drive is used</source>
+        <translation>%1에 중단된 기종 확인이 쓴 %2이(가) 남아 있고 %3(으)로 되돌릴 수 없습니다(%4): 이 드라이버를 쓰기 전에 %3(으)로 설정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="71"/>
+        <source>%1 set back from %2 to %3, left by a variant probe that was interrupted</source>
+        <translation>%1을(를) %2에서 %3(으)로 되돌렸습니다 (중단된 기종 확인이 남긴 값)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="102"/>
+        <source>not probed: the original value cannot be kept while it is (%1)</source>
+        <translation>확인하지 않음: 확인하는 동안 원래 값을 보관할 수 없습니다(%1)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="123"/>
         <source>the probe %1 was not answered as the manual says: %2</source>
         <translation>기종 확인 %1에 대한 응답이 매뉴얼과 다릅니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="83"/>
+        <location filename="../model/session/VariantProber.cpp" line="147"/>
         <source>%1 could not be set back to %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>기종 확인 후 %1을(를) %2(으)로 되돌리지 못했습니다 (%3): 이 드라이버를 사용하기 전에 %2(으)로 설정하십시오</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="88"/>
+        <location filename="../model/session/VariantProber.cpp" line="152"/>
         <source>%1 accepted, %2 written back</source>
         <translation>%1 수락됨, %2(으)로 되돌려 씀</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="96"/>
+        <location filename="../model/session/VariantProber.cpp" line="160"/>
         <source>%1 refused (%2)</source>
         <translation>%1 거부됨 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="106"/>
+        <location filename="../model/session/VariantProber.cpp" line="171"/>
         <source>%1 does not read back as %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>기종 확인 후 %1의 읽은 값이 %2이(가) 아닙니다 (%3): 이 드라이버를 사용하기 전에 %2(으)로 설정하십시오</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="113"/>
+        <location filename="../model/session/VariantProber.cpp" line="181"/>
         <source>the probe did not decide</source>
         <translation>확인으로 판정하지 못했습니다</translation>
     </message>

@@ -5340,17 +5340,17 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>&amp;Recipe editor…</source>
         <translation>配方编辑器(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="51"/>
         <source>the recipe editor</source>
         <translation>配方编辑器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="57"/>
         <source>Re&amp;sults…</source>
         <translation>结果(&amp;S)…</translation>
     </message>
@@ -5453,158 +5453,234 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="35"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>从标准样机生成配方：备份文件或总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="41"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：标准样机的备份文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：标准样机在总线上的驱动器，例如 1,2（配合连接选项）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：产品名称。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版本。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：替换已有的配方文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="64"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
+        <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
+        <translation>recipe create --drives：让标准样机按配方步骤运行一次（电机会转动），并以测量值确定保持步骤的限值。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
+        <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
+        <translation>recipe create --measure：测量值两侧的裕量，以测量值的 % 表示（默认 25；至少为该参数满量程的 5 %）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <source>PERCENT</source>
+        <translation>百分比</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
+        <source>recipe create --measure: run the motors.</source>
+        <translation>recipe create --measure：确认让电机运转。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
         <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="306"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
         <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
         <translation>错误：站号 %1：%2；若知道机型，请用 --variant %1=机型 指定；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
         <source>machine number %1: %2, %3 (%4)</source>
         <translation>站号 %1：%2，%3（%4）</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="127"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>读取站号 %1 时中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="122"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="134"/>
         <source>error: %1: cannot read %2</source>
         <translation>错误：%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="137"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>错误：%1 含有其设备描述不允许的值：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="140"/>
         <source>nothing written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="145"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已读取 %2 项设定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <source>Would run the golden unit through the recipe&apos;s steps:</source>
+        <translation>将让标准样机按配方步骤运行：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
+        <translation>这会使电机转动：加上 --yes 才会运行。未运行任何电机，也未写入任何文件。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="166"/>
+        <source>measuring the golden unit (Ctrl-C stops every motor):</source>
+        <translation>正在测量标准样机（按 Ctrl-C 停止所有电机）：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="174"/>
+        <source>drive %1: %2</source>
+        <translation>驱动器 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <source>interrupted</source>
+        <translation>已中断</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="198"/>
+        <source>WARNING: %1 is not confirmed stopped</source>
+        <translation>警告：%1 未确认停止</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <source>limits from the golden unit:</source>
+        <translation>由标准样机确定的限值：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="211"/>
+        <source>  drive %1, step %2: %3</source>
+        <translation>  驱动器 %1，步骤 %2：%3</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="234"/>
         <source>error: %1; usage: eol %2</source>
         <translation>错误：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="148"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="238"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>意外的参数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="152"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="242"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>请指定 --from-backup FILE 或 --drives LIST 之一</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="156"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="245"/>
+        <source>--measure needs the golden unit on the bus: give --drives LIST</source>
+        <translation>--measure 需要总线上的标准样机：请指定 --drives 列表</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="251"/>
+        <source>--margin is for --measure</source>
+        <translation>--margin 仅用于 --measure</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
+        <source>--margin %1: give a percentage from 1 to 100</source>
+        <translation>--margin %1：请输入 1 到 100 的百分比</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="259"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>请用 --product NAME 指定产品名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>请用 --revision REV 指定配方版本</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="264"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>请用 -o RECIPE 指定要写入的配方文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="164"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="267"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>错误：%1 已存在；使用 --force 进行替换</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="289"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="197"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="301"/>
         <source>Made from a golden unit; variants: %1.</source>
         <translation>由标准样机制作；机型：%1。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="313"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="224"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="331"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已写入 %1：%2 版本 %3，%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="338"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>错误：配方未通过 &quot;eol recipe check&quot;：请修正，然后用 &quot;opentop-cli eol recipe sign %1&quot; 签名</translation>
     </message>
@@ -7506,6 +7582,171 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>十进制</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenLimits</name>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="67"/>
+        <source>the golden unit did not pass its own test (%1): no limits can come from it</source>
+        <translation>标准样机未通过自身的检测（%1）：无法由它确定限值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="75"/>
+        <source>machine number %1: unknown family &quot;%2&quot;</source>
+        <translation>站号 %1：未知的机型系列“%2”</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="94"/>
+        <source>machine number %1: unknown parameter &quot;%2&quot;</source>
+        <translation>站号 %1：未知的参数“%2”</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="104"/>
+        <source>machine number %1: the golden unit&apos;s %2 was not measured</source>
+        <translation>站号 %1：未测量到标准样机的 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="129"/>
+        <source>Hold limits measured on the golden unit on %1: the measured value ± %2 % (at least %3 % of full scale), never wider than the default limits.</source>
+        <translation>保持步骤的限值于 %1 在标准样机上测量：测量值 ± %2 %（至少为满量程的 %3 %），不会比默认限值宽。</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="140"/>
+        <source>%1–%2%3</source>
+        <translation>%1–%2%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="142"/>
+        <source>≤ %1%2</source>
+        <translation>≤ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="144"/>
+        <source>≥ %1%2</source>
+        <translation>≥ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="145"/>
+        <source>no limit</source>
+        <translation>无限值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="153"/>
+        <source>%1 %2 (kept: measured %3)</source>
+        <translation>%1 %2（保持原值：测量值 %3）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="155"/>
+        <source>%1 %2 (default %3, measured %4)</source>
+        <translation>%1 %2（默认 %3，测量值 %4）</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasure</name>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="31"/>
+        <source>machine number %1 (%2): runs its motor for about %3 s: %4</source>
+        <translation>站号 %1（%2）：电机运行约 %3 s：%4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="43"/>
+        <source>golden unit</source>
+        <translation>标准样机</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="44"/>
+        <source>recipe from a golden unit</source>
+        <translation>从标准样机生成配方</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasureButton</name>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <source>Measure limits…</source>
+        <translation>测量限值…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
+        <translation>让总线上的标准样机按配方步骤运行一次，以测量值确定保持步骤的限值：测量值 ± 25 %（至少为满量程的 5 %），不会比原限值宽</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <source>Measure limits on the golden unit</source>
+        <translation>在标准样机上测量限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <source>The recipe has no positions.</source>
+        <translation>配方没有任何工位。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <source>The recipe cannot be read: %1</source>
+        <translation>无法读取配方：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
+        <translation>站号 %1 不是总线上的驱动器：请先连接标准样机并扫描。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
+        <translation>要让标准样机按配方步骤运行吗？以下电机会转动：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <source>Run the motors</source>
+        <translation>运行电机</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <source>The bus is not connected.</source>
+        <translation>总线未连接。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Measuring the golden unit…</source>
+        <translation>正在测量标准样机…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="96"/>
+        <source>stopped by the user</source>
+        <translation>由用户停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="99"/>
+        <source>Machine number %1: %2</source>
+        <translation>站号 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="109"/>
+        <source>%1 is not confirmed stopped.</source>
+        <translation>%1 未确认停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="111"/>
+        <source>No limits were taken: %1</source>
+        <translation>未确定任何限值：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="118"/>
+        <source>Machine number %1, step %2: %3</source>
+        <translation>站号 %1，步骤 %2：%3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
+        <translation>保持步骤的限值已按标准样机确定。请确认后保存配方。</translation>
     </message>
 </context>
 <context>
@@ -10055,6 +10296,30 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::ProbeJournal</name>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="32"/>
+        <source>%1 is not a probe journal (%2): ignored; a probe interrupted before may have left its value on a drive</source>
+        <translation>%1 不是探测记录文件（%2）：已忽略；之前中断的探测可能在驱动器上留下了探测值</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="41"/>
+        <source>cannot create the folder of %1</source>
+        <translation>无法创建 %1 的文件夹</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="47"/>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="83"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="97"/>
+        <source>%1 is locked by another program</source>
+        <translation>%1 已被其他程序锁定</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProductionMode</name>
     <message>
         <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
@@ -10817,12 +11082,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApprovals</name>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="19"/>
         <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
         <translation>配方“%1”版本 %2 是草稿：此版本（其校验和）未经批准，因此不会运行。请工程师批准（配方编辑器中的“批准…”，或 opentop-cli eol recipe approve FILE --user NAME）。</translation>
     </message>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="56"/>
         <source>a recipe without a checksum cannot be approved: sign it first</source>
         <translation>没有校验和的配方无法批准：请先签名</translation>
     </message>
@@ -11283,12 +11548,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="263"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大于 %2 MB，超过配方文件的上限；不是配方文件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="271"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -12943,32 +13208,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="72"/>
+        <location filename="../model/eol/ResultStore.cpp" line="63"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>已中断：工位在产品测试完成前停止（被终止、断电或崩溃）；该产品未经验证</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="80"/>
+        <location filename="../model/eol/ResultStore.cpp" line="71"/>
         <source>a unit needs a serial number</source>
         <translation>产品需要序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="205"/>
+        <location filename="../model/eol/ResultStore.cpp" line="196"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>产品只能以 pass、fail、error 或 aborted 结束，而不是 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="235"/>
+        <location filename="../model/eol/ResultStore.cpp" line="226"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>产品 %1（序列号 %2）从未在结果数据库中开始测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="237"/>
+        <location filename="../model/eol/ResultStore.cpp" line="228"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>产品 %1（序列号 %2）已记录为 %3；保留其记录</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="259"/>
+        <location filename="../model/eol/ResultStore.cpp" line="250"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>产品 %1（序列号 %2）在结果数据库中不处于进行中：从未开始，或已完成，或已标记为中断</translation>
     </message>
@@ -18052,7 +18317,7 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserStore</name>
     <message>
-        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <location filename="../model/access/UserStore.cpp" line="43"/>
         <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
         <translation>用户名为 1 至 64 个字母、数字或 . _ @ -（不能有空格）：“%1”</translation>
     </message>
@@ -18317,37 +18582,53 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::VariantProber</name>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="30"/>
+        <location filename="../model/session/VariantProber.cpp" line="47"/>
+        <location filename="../model/session/VariantProber.cpp" line="85"/>
         <source>%1 cannot be read: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="59"/>
+        <location filename="../model/session/VariantProber.cpp" line="63"/>
+        <source>%1 still holds %2 from a variant probe that was interrupted, and cannot be set back to %3 (%4): set it to %3 before this drive is used</source>
+        <translation>%1 仍保留中断的机型探测写入的 %2，且无法改回 %3（%4）：使用此驱动器前请将其设为 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="71"/>
+        <source>%1 set back from %2 to %3, left by a variant probe that was interrupted</source>
+        <translation>%1 已由 %2 改回 %3（之前中断的机型探测所留下）</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="102"/>
+        <source>not probed: the original value cannot be kept while it is (%1)</source>
+        <translation>未探测：探测期间无法保存原值（%1）</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="123"/>
         <source>the probe %1 was not answered as the manual says: %2</source>
         <translation>机型探测 %1 的应答与手册所述不符：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="83"/>
+        <location filename="../model/session/VariantProber.cpp" line="147"/>
         <source>%1 could not be set back to %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>机型探测后无法将 %1 改回 %2（%3）：使用此驱动器前请将其设为 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="88"/>
+        <location filename="../model/session/VariantProber.cpp" line="152"/>
         <source>%1 accepted, %2 written back</source>
         <translation>%1 被接受，已写回 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="96"/>
+        <location filename="../model/session/VariantProber.cpp" line="160"/>
         <source>%1 refused (%2)</source>
         <translation>%1 被拒绝（%2）</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="106"/>
+        <location filename="../model/session/VariantProber.cpp" line="171"/>
         <source>%1 does not read back as %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>机型探测后 %1 读回不是 %2（%3）：使用此驱动器前请将其设为 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="113"/>
+        <location filename="../model/session/VariantProber.cpp" line="181"/>
         <source>the probe did not decide</source>
         <translation>探测无法判定</translation>
     </message>

@@ -5340,17 +5340,17 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolMenu</name>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="37"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="38"/>
         <source>&amp;Recipe editor…</source>
         <translation>配方編輯器(&amp;R)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="47"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="51"/>
         <source>the recipe editor</source>
         <translation>配方編輯器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/EolMenu.cpp" line="53"/>
+        <location filename="../ui/eol/EolMenu.cpp" line="57"/>
         <source>Re&amp;sults…</source>
         <translation>結果(&amp;S)…</translation>
     </message>
@@ -5453,158 +5453,234 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="35"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>由標準樣品建立配方：來源為備份檔或匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="41"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：標準樣品的備份檔。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="42"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：標準樣品在匯流排上的驅動器，例如 1,2 (搭配連線選項)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：產品名稱。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版次。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：取代既有的配方檔。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="64"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
+        <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
+        <translation>recipe create --drives：讓標準樣品依配方步驟運轉一次 (馬達會轉動)，並以量測值訂定保持步驟的限值。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
+        <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
+        <translation>recipe create --measure：量測值兩側的裕度，以量測值的 % 表示 (預設 25；至少為該參數滿刻度的 5 %)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <source>PERCENT</source>
+        <translation>百分比</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
+        <source>recipe create --measure: run the motors.</source>
+        <translation>recipe create --measure：確認讓馬達運轉。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
         <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="306"/>
         <source>error: %1; nothing written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
         <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
         <translation>錯誤：機號 %1：%2；若知道機型，請以 --variant %1=機型 指定；未寫入任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
         <source>machine number %1: %2, %3 (%4)</source>
         <translation>機號 %1：%2，%3（%4）</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="127"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>讀取機號 %1 時中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="122"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="134"/>
         <source>error: %1: cannot read %2</source>
         <translation>錯誤：%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="125"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="137"/>
         <source>error: %1 holds a value its profile does not allow: %2</source>
         <translation>錯誤：%1 含有定義檔不允許的值：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="140"/>
         <source>nothing written</source>
         <translation>未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="145"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已讀取 %2 項設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <source>Would run the golden unit through the recipe&apos;s steps:</source>
+        <translation>將讓標準樣品依配方步驟運轉：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
+        <translation>這會使馬達轉動：加上 --yes 才會運轉。未運轉任何馬達，也未寫入任何檔案。</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="166"/>
+        <source>measuring the golden unit (Ctrl-C stops every motor):</source>
+        <translation>正在量測標準樣品 (按 Ctrl-C 停止所有馬達)：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="174"/>
+        <source>drive %1: %2</source>
+        <translation>驅動器 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <source>interrupted</source>
+        <translation>已中斷</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="198"/>
+        <source>WARNING: %1 is not confirmed stopped</source>
+        <translation>警告：%1 未確認停止</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <source>limits from the golden unit:</source>
+        <translation>由標準樣品訂定的限值：</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="211"/>
+        <source>  drive %1, step %2: %3</source>
+        <translation>  驅動器 %1，步驟 %2：%3</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="234"/>
         <source>error: %1; usage: eol %2</source>
         <translation>錯誤：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="148"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="238"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>非預期的引數 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="152"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="242"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>請指定 --from-backup FILE 或 --drives LIST 其中之一</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="156"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="245"/>
+        <source>--measure needs the golden unit on the bus: give --drives LIST</source>
+        <translation>--measure 需要匯流排上的標準樣品：請指定 --drives 清單</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="251"/>
+        <source>--margin is for --measure</source>
+        <translation>--margin 僅用於 --measure</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
+        <source>--margin %1: give a percentage from 1 to 100</source>
+        <translation>--margin %1：請輸入 1 到 100 的百分比</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="259"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>請以 --product NAME 指定產品名稱</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>請以 --revision REV 指定配方版次</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="264"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>請以 -o RECIPE 指定要寫入的配方檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="164"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="267"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>錯誤：%1 已存在；請加上 --force 以取代</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
         <source>error: %1; nothing read</source>
         <translation>錯誤：%1；未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="289"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="197"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="301"/>
         <source>Made from a golden unit; variants: %1.</source>
         <translation>由標準機製作；機型：%1。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="313"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="224"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="331"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已寫入 %1：%2 版次 %3，%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="338"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>錯誤：配方未通過 &quot;eol recipe check&quot;：請修正後以 &quot;opentop-cli eol recipe sign %1&quot; 簽署</translation>
     </message>
@@ -7506,6 +7582,171 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <location filename="../cli/GetCommand.cpp" line="221"/>
         <source>Decimal</source>
         <translation>十進位</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenLimits</name>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="67"/>
+        <source>the golden unit did not pass its own test (%1): no limits can come from it</source>
+        <translation>標準樣品未通過自身的檢測 (%1)：無法由它訂定限值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="75"/>
+        <source>machine number %1: unknown family &quot;%2&quot;</source>
+        <translation>機號 %1：未知的機種系列「%2」</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="94"/>
+        <source>machine number %1: unknown parameter &quot;%2&quot;</source>
+        <translation>機號 %1：未知的參數「%2」</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="104"/>
+        <source>machine number %1: the golden unit&apos;s %2 was not measured</source>
+        <translation>機號 %1：未量測到標準樣品的 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="129"/>
+        <source>Hold limits measured on the golden unit on %1: the measured value ± %2 % (at least %3 % of full scale), never wider than the default limits.</source>
+        <translation>保持步驟的限值於 %1 在標準樣品上量測：量測值 ± %2 % (至少為滿刻度的 %3 %)，不會比預設限值寬。</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="140"/>
+        <source>%1–%2%3</source>
+        <translation>%1–%2%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="142"/>
+        <source>≤ %1%2</source>
+        <translation>≤ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="144"/>
+        <source>≥ %1%2</source>
+        <translation>≥ %1%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="145"/>
+        <source>no limit</source>
+        <translation>無限值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="153"/>
+        <source>%1 %2 (kept: measured %3)</source>
+        <translation>%1 %2 (維持原值：量測值 %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenLimits.cpp" line="155"/>
+        <source>%1 %2 (default %3, measured %4)</source>
+        <translation>%1 %2 (預設 %3，量測值 %4)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasure</name>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="31"/>
+        <source>machine number %1 (%2): runs its motor for about %3 s: %4</source>
+        <translation>機號 %1 (%2)：馬達運轉約 %3 s：%4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="43"/>
+        <source>golden unit</source>
+        <translation>標準樣品</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/GoldenMeasure.cpp" line="44"/>
+        <source>recipe from a golden unit</source>
+        <translation>由標準樣品建立配方</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::GoldenMeasureButton</name>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <source>Measure limits…</source>
+        <translation>量測限值…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
+        <translation>讓匯流排上的標準樣品依配方步驟運轉一次，以量測值訂定保持步驟的限值：量測值 ± 25 % (至少為滿刻度的 5 %)，不會比原限值寬</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <source>Measure limits on the golden unit</source>
+        <translation>在標準樣品上量測限值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <source>The recipe has no positions.</source>
+        <translation>配方沒有任何工位。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <source>The recipe cannot be read: %1</source>
+        <translation>無法讀取配方：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
+        <translation>機號 %1 不是匯流排上的驅動器：請先連線到標準樣品並掃描。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
+        <translation>要讓標準樣品依配方步驟運轉嗎？以下馬達會轉動：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <source>Run the motors</source>
+        <translation>運轉馬達</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <source>The bus is not connected.</source>
+        <translation>匯流排未連線。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Measuring the golden unit…</source>
+        <translation>正在量測標準樣品…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="96"/>
+        <source>stopped by the user</source>
+        <translation>由使用者停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="99"/>
+        <source>Machine number %1: %2</source>
+        <translation>機號 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="109"/>
+        <source>%1 is not confirmed stopped.</source>
+        <translation>%1 未確認停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="111"/>
+        <source>No limits were taken: %1</source>
+        <translation>未訂定任何限值：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="118"/>
+        <source>Machine number %1, step %2: %3</source>
+        <translation>機號 %1，步驟 %2：%3</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
+        <translation>保持步驟的限值已依標準樣品訂定。請確認後儲存配方。</translation>
     </message>
 </context>
 <context>
@@ -10055,6 +10296,30 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
     </message>
 </context>
 <context>
+    <name>opentop::ProbeJournal</name>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="32"/>
+        <source>%1 is not a probe journal (%2): ignored; a probe interrupted before may have left its value on a drive</source>
+        <translation>%1 不是探測記錄檔 (%2)：已忽略；先前中斷的探測可能在驅動器上留下了探測值</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="41"/>
+        <source>cannot create the folder of %1</source>
+        <translation>無法建立 %1 的資料夾</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="47"/>
+        <source>cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/session/ProbeJournal.cpp" line="83"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="97"/>
+        <source>%1 is locked by another program</source>
+        <translation>%1 已被其他程式鎖定</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProductionMode</name>
     <message>
         <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
@@ -10817,12 +11082,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApprovals</name>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="32"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="19"/>
         <source>recipe &quot;%1&quot; rev. %2 is a draft: this version (its checksum) is not approved, so it does not run. An engineer approves it (Approve… in the recipe editor, or opentop-cli eol recipe approve FILE --user NAME).</source>
         <translation>配方「%1」版次 %2 是草稿：此版本（其校驗碼）未經核准，因此不會執行。請工程師核准（配方編輯器中的「核准…」，或 opentop-cli eol recipe approve FILE --user NAME）。</translation>
     </message>
     <message>
-        <location filename="../model/access/RecipeApprovals.cpp" line="69"/>
+        <location filename="../model/access/RecipeApprovals.cpp" line="56"/>
         <source>a recipe without a checksum cannot be approved: sign it first</source>
         <translation>沒有校驗碼的配方無法核准：請先簽署</translation>
     </message>
@@ -11283,12 +11548,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="263"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大於配方檔上限 %2 MB；不是配方檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="271"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -12943,32 +13208,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="72"/>
+        <location filename="../model/eol/ResultStore.cpp" line="63"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>已中斷：工站在產品測試完成前停止 (被終止、斷電或當機)；此產品未經驗證</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="80"/>
+        <location filename="../model/eol/ResultStore.cpp" line="71"/>
         <source>a unit needs a serial number</source>
         <translation>產品需要序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="205"/>
+        <location filename="../model/eol/ResultStore.cpp" line="196"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>產品只能以 pass、fail、error 或 aborted 結束，而非 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="235"/>
+        <location filename="../model/eol/ResultStore.cpp" line="226"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>產品 %1 (序號 %2) 從未在結果資料庫中開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="237"/>
+        <location filename="../model/eol/ResultStore.cpp" line="228"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>產品 %1 (序號 %2) 已記錄為 %3；保留其記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="259"/>
+        <location filename="../model/eol/ResultStore.cpp" line="250"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>產品 %1 (序號 %2) 在結果資料庫中並非測試中：從未開始，或已完成或已標記為中斷</translation>
     </message>
@@ -18052,7 +18317,7 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UserStore</name>
     <message>
-        <location filename="../model/access/UserStore.cpp" line="52"/>
+        <location filename="../model/access/UserStore.cpp" line="43"/>
         <source>a user name is 1 to 64 letters, digits or . _ @ - (no spaces): &quot;%1&quot;</source>
         <translation>使用者名稱為 1 至 64 個字母、數字或 . _ @ -（不可有空格）：「%1」</translation>
     </message>
@@ -18317,37 +18582,53 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::VariantProber</name>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="30"/>
+        <location filename="../model/session/VariantProber.cpp" line="47"/>
+        <location filename="../model/session/VariantProber.cpp" line="85"/>
         <source>%1 cannot be read: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="59"/>
+        <location filename="../model/session/VariantProber.cpp" line="63"/>
+        <source>%1 still holds %2 from a variant probe that was interrupted, and cannot be set back to %3 (%4): set it to %3 before this drive is used</source>
+        <translation>%1 仍保留中斷的機型探測所寫入的 %2，且無法改回 %3 (%4)：使用此驅動器前請將其設為 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="71"/>
+        <source>%1 set back from %2 to %3, left by a variant probe that was interrupted</source>
+        <translation>%1 已由 %2 改回 %3 (先前中斷的機型探測所留下)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="102"/>
+        <source>not probed: the original value cannot be kept while it is (%1)</source>
+        <translation>未探測：探測期間無法保存原值 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../model/session/VariantProber.cpp" line="123"/>
         <source>the probe %1 was not answered as the manual says: %2</source>
         <translation>機型探測 %1 的回應與手冊所述不符：%2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="83"/>
+        <location filename="../model/session/VariantProber.cpp" line="147"/>
         <source>%1 could not be set back to %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>機型探測後無法將 %1 改回 %2（%3）：使用此驅動器前請將它設為 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="88"/>
+        <location filename="../model/session/VariantProber.cpp" line="152"/>
         <source>%1 accepted, %2 written back</source>
         <translation>%1 被接受，已寫回 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="96"/>
+        <location filename="../model/session/VariantProber.cpp" line="160"/>
         <source>%1 refused (%2)</source>
         <translation>%1 被拒絕（%2）</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="106"/>
+        <location filename="../model/session/VariantProber.cpp" line="171"/>
         <source>%1 does not read back as %2 after the variant probe (%3): set it to %2 before this drive is used</source>
         <translation>機型探測後 %1 讀回不是 %2（%3）：使用此驅動器前請將它設為 %2</translation>
     </message>
     <message>
-        <location filename="../model/session/VariantProber.cpp" line="113"/>
+        <location filename="../model/session/VariantProber.cpp" line="181"/>
         <source>the probe did not decide</source>
         <translation>探測無法判定</translation>
     </message>

@@ -35,7 +35,11 @@ void VariantCheck::run(std::function<void(const VariantDecision::Decision&)> don
     prober->run([this, prober, done](const VariantProber::Result& r) {
         prober->deleteLater();
         m_evidence.probe = r;
-        done(VariantDecision::decide(m_profile, m_position, m_evidence));
+        VariantDecision::Decision d = VariantDecision::decide(m_profile, m_position, m_evidence);
+        // The record says when an earlier, interrupted probe had to be put right.
+        if (!r.repaired.isEmpty())
+            d.proof = d.proof.isEmpty() ? r.repaired : d.proof + QStringLiteral("; ") + r.repaired;
+        done(d);
     });
 }
 

@@ -1,5 +1,7 @@
 #include "session/VariantProber.h"
 
+#include "ModbusClient.h"
+#include "ModelLog.h"
 #include "profile/Profile.h"
 #include "profile/ValueCodec.h"
 #include "session/DeviceSession.h"
@@ -9,10 +11,14 @@
 namespace opentop {
 
 VariantProber::VariantProber(ModbusClient* client, const Profile& profile,
-                             const VariantProbe& probe, int slave, QObject* parent)
+                             const VariantProbe& probe, int slave, QObject* parent,
+                             const QString& journal)
     : QObject(parent)
     , m_profile(profile)
     , m_probe(probe)
+    , m_journal(journal)
+    , m_port(client->settings().port)
+    , m_slave(slave)
 {
     // As a variant that accepts the probe value: the session's own validation lets it through,
     // and the drive itself decides.
@@ -23,6 +29,55 @@ VariantProber::VariantProber(ModbusClient* client, const Profile& profile,
 void VariantProber::run(std::function<void(const Result&)> done)
 {
     m_done = std::move(done);
+    const std::optional<ProbeJournal::Entry> earlier = m_journal.pending(m_port, m_slave);
+    if (earlier && earlier->parameter == m_probe.parameter)
+        repair(*earlier);
+    else
+        start();
+}
+
+void VariantProber::repair(const ProbeJournal::Entry& entry)
+{
+    // Only while the drive still holds the probe value: anything else was set since, by the
+    // probe's own write-back or by a person, and stays.
+    m_session->read(m_probe.parameter, [this, entry](const DeviceSession::Outcome& r) {
+        const ParameterMeta* meta = m_profile.parameter(m_probe.parameter);
+        if (!r.ok || !r.value.valid) {
+            finish(Result::Outcome::Unproven, QString(),
+                   tr("%1 cannot be read: %2").arg(meta->canonicalLabel, r.error));
+            return;
+        }
+        QString error;
+        if (ValueCodec::formatNumber(r.value.number, meta->spec.decimals) != entry.probe) {
+            m_journal.end(m_port, m_slave, &error);
+            start();
+            return;
+        }
+        DeviceSession::WriteOptions options;
+        options.verify = true;
+        m_session->write(
+            m_probe.parameter, entry.original, options,
+            [this, entry, meta](const DeviceSession::Outcome& w) {
+                if (!w.ok) {
+                    finish(Result::Outcome::Disturbed, QString(),
+                           tr("%1 still holds %2 from a variant probe that was "
+                              "interrupted, and cannot be set back to %3 (%4): set "
+                              "it to %3 before this drive is used")
+                               .arg(meta->canonicalLabel, entry.probe, entry.original, w.error));
+                    return;
+                }
+                QString ignored; // a stale entry is checked against the drive
+                m_journal.end(m_port, m_slave, &ignored);
+                m_repaired = tr("%1 set back from %2 to %3, left by a variant probe "
+                                "that was interrupted")
+                                 .arg(meta->canonicalLabel, entry.probe, entry.original);
+                start();
+            });
+    });
+}
+
+void VariantProber::start()
+{
     const ParameterMeta* meta = m_profile.parameter(m_probe.parameter);
     m_session->read(m_probe.parameter, [this, meta](const DeviceSession::Outcome& r) {
         if (!r.ok || !r.value.valid) {
@@ -40,6 +95,13 @@ void VariantProber::probe()
 {
     const ParameterMeta* meta = m_profile.parameter(m_probe.parameter);
     const QString text = ValueCodec::formatNumber(m_probe.value, meta->spec.decimals);
+    // Kept before it is sent: a kill from here on is put right by the next probe.
+    QString error;
+    if (!m_journal.begin(m_port, m_slave, {m_probe.parameter, m_originalText, text}, &error)) {
+        finish(Result::Outcome::Unproven, QString(),
+               tr("not probed: the original value cannot be kept while it is (%1)").arg(error));
+        return;
+    }
     DeviceSession::WriteOptions options;
     options.verify = true;
     m_session->write(m_probe.parameter, text, options, [this](const DeviceSession::Outcome& w) {
@@ -55,6 +117,8 @@ void VariantProber::probe()
         // nothing; what the drive holds now is read, and put back when it changed.
         m_session->read(m_probe.parameter, [this, w](const DeviceSession::Outcome& r) {
             if (r.ok && r.value.registers == m_original) {
+                QString ignored;
+                m_journal.end(m_port, m_slave, &ignored);
                 finish(Result::Outcome::Unproven, QString(),
                        tr("the probe %1 was not answered as the manual says: %2")
                            .arg(m_probe.describe(m_profile), w.error));
@@ -102,6 +166,7 @@ void VariantProber::checkOriginal(const QString& proof)
     m_session->read(m_probe.parameter, [this, proof](const DeviceSession::Outcome& r) {
         const ParameterMeta* meta = m_profile.parameter(m_probe.parameter);
         if (!r.ok || r.value.registers != m_original) {
+            // The entry stays: the next probe of this drive tries again.
             finish(Result::Outcome::Disturbed, proof,
                    tr("%1 does not read back as %2 after the variant probe (%3): set it to %2 "
                       "before this drive is used")
@@ -109,6 +174,9 @@ void VariantProber::checkOriginal(const QString& proof)
                             r.ok ? ValueCodec::formatCanonical(*meta, r.value) : r.error));
             return;
         }
+        QString error;
+        if (!m_journal.end(m_port, m_slave, &error))
+            qCWarning(lcModel) << error; // the next probe finds the original: harmless
         if (m_variants.isEmpty()) {
             finish(Result::Outcome::Unproven, proof, tr("the probe did not decide"));
             return;
@@ -123,6 +191,7 @@ void VariantProber::finish(Result::Outcome outcome, const QString& proof, const 
     result.outcome = outcome;
     result.proof = proof;
     result.problem = problem;
+    result.repaired = m_repaired;
     if (outcome == Result::Outcome::Proven)
         result.variants = m_variants;
     auto done = std::move(m_done);

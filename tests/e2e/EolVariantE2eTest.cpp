@@ -9,6 +9,7 @@
 #include "eol/ResultDatabase.h"
 #include "eol/ResultQueries.h"
 
+#include <QElapsedTimer>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -161,4 +162,71 @@ TEST_F(EolVariantE2e, AVariantTheRecipeDoesNotAllowIsRefusedBeforeAnythingIsSent
     EXPECT_EQ(r.code, 2) << (r.out + r.err).toStdString();
     EXPECT_TRUE(r.err.contains(QStringLiteral("nothing was sent"))) << r.err.toStdString();
     EXPECT_FALSE(recordOf(db, QStringLiteral("SN-V")));
+}
+
+// kill -9 between the probe and its write-back leaves a DBU200 with a speed lower limit of
+// 280 r/min. The probe journal keeps the original on disk first: the restarted station's next
+// run of the unit puts it back before it probes again, and the record says so.
+TEST_F(EolVariantE2e, AStationKilledMidProbeHasTheSettingPutBackByTheNextRun)
+{
+    QString error;
+    // At 9600 baud on a timed line, a probe and its write-back are some 40 ms apart: the test
+    // sees the probe's frame in the simulator's trace and kills the station in between.
+    ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@1"),
+                           QStringLiteral("--baud"), QStringLiteral("9600"),
+                           QStringLiteral("--wire-timing")},
+                          &error, false))
+        << error.toStdString();
+    db = dir.filePath(QStringLiteral("results.db"));
+    qputenv("XDG_DATA_HOME", dir.filePath(QStringLiteral("data")).toLocal8Bit());
+    const int original = sim.get(1, kLowerLimit, 3);
+    ASSERT_NE(original, 280);
+    const QStringList line{QStringLiteral("--baud"), QStringLiteral("9600")};
+    QStringList args{QStringLiteral("--port"), sim.pty};
+    args << line << QStringLiteral("eol") << QStringLiteral("run") << example("recipe-dbu200.json")
+         << QStringLiteral("--serial") << QStringLiteral("SN-K") << QStringLiteral("--db") << db
+         << QStringLiteral("--station") << QStringLiteral("e2e") << QStringLiteral("--value")
+         << QStringLiteral("1:spno3.speed=1500");
+    // The probe's write of 280 (0x0118) to 0x1009, as function 06 or 16.
+    static const QRegularExpression probe(
+        QStringLiteral("rx 01 (06 10 09|10 10 09 00 01 02) 01 18"));
+    bool killed = false;
+    for (int attempt = 0; attempt < 3 && !killed; ++attempt) {
+        QProcess station;
+        station.start(cliProgram(), args);
+        ASSERT_TRUE(station.waitForStarted(5000));
+        QString trace;
+        QElapsedTimer timer;
+        timer.start();
+        while (timer.elapsed() < 30000 && station.state() != QProcess::NotRunning) {
+            sim.process().waitForReadyRead(1);
+            trace += QString::fromLocal8Bit(sim.process().readAllStandardError());
+            if (probe.match(trace).hasMatch()) {
+                station.kill();
+                break;
+            }
+        }
+        station.waitForFinished(5000);
+        killed = sim.get(1, kLowerLimit, 3) == 280;
+    }
+    ASSERT_TRUE(killed) << "the station was never killed between the probe and its write-back";
+
+    // The restarted station: the unit again, on a normal line.
+    const CliResult r =
+        runUnit(sim.pty, example("recipe-dbu200.json"), QStringLiteral("SN-K"), db, line);
+    EXPECT_EQ(r.code, 0) << (r.out + r.err).toStdString();
+    EXPECT_EQ(sim.get(1, kLowerLimit, 3), original);
+    const auto record = recordOf(db, QStringLiteral("SN-K"));
+    ASSERT_TRUE(record);
+    ASSERT_EQ(record->drives.size(), 1);
+    EXPECT_TRUE(record->drives[0].variantProof.contains(QStringLiteral("set back from 280")))
+        << record->drives[0].variantProof.toStdString();
+    EXPECT_EQ(record->drives[0].variantSource, VariantSource::Probed);
+    // The journal is empty again: a third run touches nothing it need not.
+    const CliResult again =
+        runUnit(sim.pty, example("recipe-dbu200.json"), QStringLiteral("SN-L"), db, line);
+    EXPECT_EQ(again.code, 0) << (again.out + again.err).toStdString();
+    const auto third = recordOf(db, QStringLiteral("SN-L"));
+    ASSERT_TRUE(third);
+    EXPECT_FALSE(third->drives.value(0).variantProof.contains(QStringLiteral("set back")));
 }

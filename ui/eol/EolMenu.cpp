@@ -1,6 +1,7 @@
 #include "eol/EolMenu.h"
 
 #include "access/StationAccess.h"
+#include "eol/GoldenMeasureButton.h"
 #include "eol/IdentityDialog.h"
 #include "eol/RecipeApproveButton.h"
 #include "eol/RecipeEditor.h"
@@ -38,6 +39,9 @@ EolMenu::EolMenu(QMenu* menu, QWidget* window, std::function<BusDrives*()> drive
         auto open = [this, editor](const AccessDecision&) {
             showOnce<RecipeEditor>(*editor, [this] {
                 auto* made = new RecipeEditor(m_drives, m_window);
+                made->addToolbarButton(new GoldenMeasureButton(
+                    m_drives, [made] { return made->document(); },
+                    [made](const QJsonObject& d) { made->setDocument(d); }, made));
                 made->addToolbarButton(new RecipeApproveButton(
                     m_access, [made] { return made->path(); }, made));
                 return made;

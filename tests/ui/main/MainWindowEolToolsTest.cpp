@@ -6,6 +6,7 @@
 #include "EolSampleUnit.h"
 #include "MainWindowFixture.h"
 #include "eol/EolMenu.h"
+#include "eol/GoldenMeasureButton.h"
 #include "eol/RecipeEditor.h"
 #include "eol/RecipeFile.h"
 #include "eol/RecipePositionForm.h"
@@ -19,8 +20,10 @@
 #include <QGroupBox>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
@@ -340,5 +343,78 @@ TEST_F(MainWindowEolToolsTest, ARecipeFromTheGoldenDriveOnTheBusPassesCheckAndSa
     ASSERT_TRUE(finished);
     EXPECT_FALSE(ok);
     EXPECT_TRUE(error.contains(QStringLiteral("33"))) << qPrintable(error);
+    editor->close();
+}
+
+// The editor's "Measure limits…" through the real window: the question names the drive and
+// defaults to No (No runs nothing); Yes runs the golden drive once, the load limit comes down
+// from the default 100 % to the measured load + margin, the description says so, and the
+// motor is stopped afterwards.
+TEST_F(MainWindowEolToolsTest, MeasuredLimitsFromTheGoldenDriveReplaceTheDefaultLoadLimit)
+{
+    window->findChild<EolMenu*>()->recipeEditorAction()->trigger();
+    auto* editor = window->findChild<RecipeEditor*>();
+    ASSERT_TRUE(editor);
+    bool made = false;
+    editor->newFromDrives({1}, QStringLiteral("Belt"), QStringLiteral("A"),
+                          [&](bool ok, const QString& why) {
+                              made = true;
+                              EXPECT_TRUE(ok) << qPrintable(why);
+                          });
+    ASSERT_TRUE(waitFor([&] { return made; }, 20000));
+    auto loadUpper = [editor] {
+        QString error;
+        const std::optional<Recipe> r = RecipeFile::fromEdited(editor->document(), &error);
+        for (const RecipeStep& s : r ? r->positions.value(0).steps : QVector<RecipeStep>())
+            for (const RecipeLimit& l : s.limits)
+                if (l.parameter == QLatin1String("status.load"))
+                    return l.upper.value_or(-1);
+        return -1.0;
+    };
+    ASSERT_EQ(loadUpper(), 100);
+    auto* measure = editor->findChild<GoldenMeasureButton*>(QStringLiteral("measureLimits"));
+    ASSERT_TRUE(measure);
+    QSignalSpy finished(measure, &GoldenMeasureButton::finished);
+    auto question = [] {
+        QMessageBox* box = nullptr;
+        waitFor([&] {
+            box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            return box != nullptr;
+        });
+        return box;
+    };
+
+    measure->click();
+    QMessageBox* box = question();
+    ASSERT_TRUE(box);
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("machine number 1")))
+        << qPrintable(box->informativeText());
+    EXPECT_EQ(box->defaultButton(), box->button(QMessageBox::No));
+    box->button(QMessageBox::No)->click();
+    QTest::qWait(300);
+    EXPECT_FALSE(measure->isRunning());
+    EXPECT_EQ(speedOf(1), 0);
+    EXPECT_EQ(finished.count(), 0);
+
+    measure->click();
+    box = question();
+    ASSERT_TRUE(box);
+    box->button(QMessageBox::Yes)->click();
+    ASSERT_TRUE(waitFor([&] { return finished.count() == 1; }, 60000));
+    EXPECT_TRUE(finished.at(0).at(1).toString().isEmpty())
+        << qPrintable(finished.at(0).at(1).toString());
+    const QStringList lines = finished.at(0).at(0).toStringList();
+    EXPECT_FALSE(lines.isEmpty());
+    const double upper = loadUpper();
+    EXPECT_GT(upper, 0);
+    EXPECT_LT(upper, 100);
+    EXPECT_TRUE(editor->document()
+                    .value(QStringLiteral("description"))
+                    .toString()
+                    .contains(QStringLiteral("measured on the golden unit")));
+    EXPECT_TRUE(editor->check().isEmpty());
+    EXPECT_EQ(speedOf(1), 0);
+    if (auto* done = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+        done->close();
     editor->close();
 }
