@@ -7719,32 +7719,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="96"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="98"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="100"/>
         <source>stopped by the user</source>
         <translation>사용자가 정지함</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="99"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="103"/>
         <source>Machine number %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="109"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="113"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1의 정지가 확인되지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="111"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
         <source>No limits were taken: %1</source>
         <translation>한계값을 정하지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="118"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>국번 %1, 단계 %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="128"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>유지 단계의 한계값을 기준 제품에 맞췄습니다. 확인한 뒤 레시피를 저장하십시오.</translation>
     </message>

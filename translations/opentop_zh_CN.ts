@@ -7719,32 +7719,33 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="96"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="98"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="100"/>
         <source>stopped by the user</source>
         <translation>由用户停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="99"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="103"/>
         <source>Machine number %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="109"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="113"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1 未确认停止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="111"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
         <source>No limits were taken: %1</source>
         <translation>未确定任何限值：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="118"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>站号 %1，步骤 %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="128"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>保持步骤的限值已按标准样机确定。请确认后保存配方。</translation>
     </message>

@@ -92,7 +92,11 @@ void GoldenMeasureButton::run(const Recipe& recipe)
     m_progress->setWindowTitle(title);
     m_progress->setMinimumDuration(0);
     m_progress->setAttribute(Qt::WA_DeleteOnClose);
+    m_progress->open(); // at once: the motors turn from the first step
+    // Stop, Esc and closing the window all stop the motors.
     connect(m_progress, &QProgressDialog::canceled, m_run,
+            [run = m_run] { run->cancel(tr("stopped by the user")); });
+    connect(m_progress, &QDialog::rejected, m_run,
             [run = m_run] { run->cancel(tr("stopped by the user")); });
     connect(m_run, &GoldenMeasure::phaseChanged, m_progress,
             [progress = m_progress](int machineNumber, EolDriveRun::Phase, const QString& text) {

@@ -22,6 +22,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -400,6 +401,10 @@ TEST_F(MainWindowEolToolsTest, MeasuredLimitsFromTheGoldenDriveReplaceTheDefault
     box = question();
     ASSERT_TRUE(box);
     box->button(QMessageBox::Yes)->click();
+    // While the motor turns, a progress window with Stop is up.
+    ASSERT_TRUE(waitFor([] {
+        return qobject_cast<QProgressDialog*>(QApplication::activeModalWidget()) != nullptr;
+    }));
     ASSERT_TRUE(waitFor([&] { return finished.count() == 1; }, 60000));
     EXPECT_TRUE(finished.at(0).at(1).toString().isEmpty())
         << qPrintable(finished.at(0).at(1).toString());
@@ -416,5 +421,22 @@ TEST_F(MainWindowEolToolsTest, MeasuredLimitsFromTheGoldenDriveReplaceTheDefault
     EXPECT_EQ(speedOf(1), 0);
     if (auto* done = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
         done->close();
+
+    // Esc while the motor turns: it is stopped, and the limits stay as they were.
+    measure->click();
+    box = question();
+    ASSERT_TRUE(box);
+    box->button(QMessageBox::Yes)->click();
+    ASSERT_TRUE(waitFor([&] { return speedOf(1) > 0; }, 20000));
+    auto* progress = qobject_cast<QProgressDialog*>(QApplication::activeModalWidget());
+    ASSERT_TRUE(progress);
+    QTest::keyClick(progress, Qt::Key_Escape);
+    ASSERT_TRUE(waitFor([&] { return finished.count() == 2; }, 20000));
+    EXPECT_FALSE(finished.at(1).at(1).toString().isEmpty())
+        << qPrintable(finished.at(1).at(0).toStringList().join(QLatin1Char(10)));
+    EXPECT_EQ(speedOf(1), 0);
+    EXPECT_EQ(loadUpper(), upper);
+    if (auto* refused = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+        refused->close();
     editor->close();
 }
