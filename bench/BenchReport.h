@@ -1,6 +1,6 @@
 #pragma once
 
-#include "BenchFigure.h"
+#include "bench/BenchFigure.h"
 
 #include <QStringList>
 #include <QTextStream>

@@ -1,10 +1,10 @@
-#include "BusBackupBenchmark.h"
+#include "bench/BusBackupBenchmark.h"
 
-#include "BenchReport.h"
-#include "SimulatorProcess.h"
-#include "WireTiming.h"
-#include "profile/ProfileRegistry.h"
-#include "session/ReadPlanner.h"
+#include "bench/BenchReport.h"
+#include "bench/SimulatorProcess.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/ReadPlanner.h"
+#include "sim/WireTiming.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>

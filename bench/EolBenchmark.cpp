@@ -1,12 +1,12 @@
-#include "EolBenchmark.h"
+#include "bench/EolBenchmark.h"
 
-#include "BenchReport.h"
-#include "ModbusClient.h"
-#include "RtuBackend.h"
-#include "SimulatorProcess.h"
-#include "eol/EolRun.h"
-#include "eol/RecipeBuilder.h"
-#include "profile/ProfileRegistry.h"
+#include "bench/BenchReport.h"
+#include "bench/SimulatorProcess.h"
+#include "model/eol/EolRun.h"
+#include "model/eol/RecipeBuilder.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
 
 #include <QEventLoop>
 #include <QTimer>

@@ -1,8 +1,8 @@
-#include "GuiBenchmark.h"
+#include "bench/GuiBenchmark.h"
 
-#include "BenchReport.h"
-#include "ProcessStats.h"
-#include "SimulatorProcess.h"
+#include "bench/BenchReport.h"
+#include "bench/ProcessStats.h"
+#include "bench/SimulatorProcess.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

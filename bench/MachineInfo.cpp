@@ -1,6 +1,6 @@
-#include "MachineInfo.h"
+#include "bench/MachineInfo.h"
 
-#include "LibraryVersions.h"
+#include "transport/LibraryVersions.h"
 
 #include <QFile>
 #include <QSysInfo>

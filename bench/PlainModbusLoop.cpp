@@ -1,4 +1,4 @@
-#include "PlainModbusLoop.h"
+#include "bench/PlainModbusLoop.h"
 
 #include <QElapsedTimer>
 #include <QFile>

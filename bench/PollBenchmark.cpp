@@ -1,13 +1,13 @@
-#include "PollBenchmark.h"
+#include "bench/PollBenchmark.h"
 
-#include "BenchReport.h"
-#include "ModbusClient.h"
-#include "PlainModbusLoop.h"
-#include "RtuBackend.h"
-#include "SimulatorProcess.h"
-#include "StackPoller.h"
-#include "WireTiming.h"
-#include "profile/ProfileRegistry.h"
+#include "bench/BenchReport.h"
+#include "bench/PlainModbusLoop.h"
+#include "bench/SimulatorProcess.h"
+#include "bench/StackPoller.h"
+#include "model/profile/ProfileRegistry.h"
+#include "sim/WireTiming.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
 
 #include <algorithm>
 

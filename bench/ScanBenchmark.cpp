@@ -1,12 +1,12 @@
-#include "ScanBenchmark.h"
+#include "bench/ScanBenchmark.h"
 
-#include "BenchReport.h"
-#include "ModbusClient.h"
-#include "PlainModbusLoop.h"
-#include "RtuBackend.h"
-#include "SimulatorProcess.h"
-#include "bus/BusScanner.h"
-#include "profile/ProfileRegistry.h"
+#include "bench/BenchReport.h"
+#include "bench/PlainModbusLoop.h"
+#include "bench/SimulatorProcess.h"
+#include "model/bus/BusScanner.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,9 +1,9 @@
-#include "StackPoller.h"
+#include "bench/StackPoller.h"
 
-#include "ModbusClient.h"
-#include "files/BackupReader.h"
-#include "profile/Profile.h"
-#include "session/DeviceSession.h"
+#include "model/files/BackupReader.h"
+#include "model/profile/Profile.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>

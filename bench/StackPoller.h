@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/ReadPlanner.h"
+#include "model/session/ReadPlanner.h"
 
 #include <QStringList>
 #include <QVector>

@@ -1,6 +1,6 @@
-#include "StartupBenchmark.h"
+#include "bench/StartupBenchmark.h"
 
-#include "BenchReport.h"
+#include "bench/BenchReport.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

@@ -1,11 +1,11 @@
-#include "AlarmsCommand.h"
+#include "cli/AlarmsCommand.h"
 
-#include "CliContext.h"
-#include "GroupCheck.h"
-#include "TextTable.h"
-#include "alarms/AlarmHistory.h"
-#include "bus/DriveName.h"
-#include "session/DeviceSession.h"
+#include "cli/CliContext.h"
+#include "cli/GroupCheck.h"
+#include "cli/TextTable.h"
+#include "model/alarms/AlarmHistory.h"
+#include "model/bus/DriveName.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,17 +1,19 @@
-#include "BackupCommand.h"
+#include "cli/BackupCommand.h"
 
-#include "CliContext.h"
-#include "ExitCode.h"
-#include "FileCommandSupport.h"
-#include "ModbusClient.h"
-#include "bus/BusScanner.h"
-#include "files/BackupFile.h"
-#include "files/BackupReader.h"
-#include "files/OutputFile.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "cli/FileCommandSupport.h"
+#include "model/bus/BusScanner.h"
+#include "model/files/BackupFile.h"
+#include "model/files/DriveBatchReader.h"
+#include "model/io/OutputFile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
+#include <QEventLoop>
 #include <QJsonArray>
+#include <QTimer>
 
 namespace opentop {
 
@@ -147,66 +149,81 @@ int BackupCommand::run(CliContext& context, const QStringList& args)
     QStringList failures;
     bool communication = false;
     QJsonArray drives;
-    for (int id : *ids) {
-        QString error;
-        DeviceSession* session = context.session(id, &error);
-        if (!session) {
-            if (!context.client()->isOpen())
-                return portLost(context, path, tr("machine number %1").arg(id), {error});
-            failures << error;
-            communication = true;
-            continue;
-        }
-        BackupReader reader(session);
-        BackupReader::Result result;
-        const bool completed = context.wait([&reader, &result](std::function<void()> finish) {
-            reader.read([&result, finish](const BackupReader::Result& r) {
-                result = r;
-                finish();
-            });
+    DriveBatchReader reader(
+        [&context](int id, QString* error) { return context.session(id, error); });
+    bool lost = false; // the port went away: the rest is not read
+    QString lostAt;
+    QStringList lostWhy;
+    QObject::connect(
+        &reader, &DriveBatchReader::driveFinished, &reader,
+        [&](const DriveBatchReader::Drive& drive) {
+            if (!drive.attempted)
+                return;
+            const BackupReader::Result& result = drive.read;
+            const QString title = drive.error.isEmpty() ? result.device.title()
+                                                        : tr("machine number %1").arg(drive.slave);
+            if (!drive.ok() && !context.client()->isOpen()) {
+                lost = true;
+                lostAt = title;
+                lostWhy = drive.error.isEmpty() ? result.failures : QStringList{drive.error};
+                reader.cancel();
+                return;
+            }
+            failures << drive.problems();
+            communication = communication || !drive.error.isEmpty() || !result.failures.isEmpty();
+            if (!drive.error.isEmpty())
+                return;
+            drives << QJsonObject{{QStringLiteral("slave"), drive.slave},
+                                  {QStringLiteral("family"), result.device.family},
+                                  {QStringLiteral("variant"), result.device.variant},
+                                  {QStringLiteral("model"), result.device.model},
+                                  {QStringLiteral("parameters"), result.parameters},
+                                  {QStringLiteral("read"), int(result.device.parameters.size())},
+                                  {QStringLiteral("requests"), result.requests},
+                                  {QStringLiteral("elapsedMs"), result.elapsedMs},
+                                  {QStringLiteral("ok"), result.ok}};
+            if (!context.json() && result.failures.isEmpty())
+                context.out() << tr("%1: %2 settings read in %3 requests, %4 ms")
+                                     .arg(title)
+                                     .arg(result.parameters)
+                                     .arg(result.requests)
+                                     .arg(result.elapsedMs)
+                              << Qt::endl;
+            else if (!context.json())
+                context.out()
+                    << tr("%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)")
+                           .arg(title)
+                           .arg(result.device.parameters.size())
+                           .arg(result.parameters)
+                           .arg(result.requests)
+                           .arg(result.elapsedMs)
+                    << Qt::endl;
+            if (result.ok)
+                file.devices << result.device;
         });
-        if (!completed) {
-            context.err()
-                << tr("interrupted while reading machine number %1: nothing written").arg(id)
-                << Qt::endl;
-            return ExitInterrupted;
+    // Ctrl-C stops after the drive being read (a half-read drive is worth nothing).
+    bool interrupted = false;
+    int current = 0;
+    QObject::connect(&reader, &DriveBatchReader::driveStarted, &reader,
+                     [&current](int slave, int, int) { current = slave; });
+    QEventLoop loop;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+        if (context.interrupted() && !interrupted) {
+            interrupted = true;
+            reader.cancel();
         }
-        const QString title = result.device.title();
-        if (!result.failures.isEmpty() && !context.client()->isOpen())
-            return portLost(context, path, title, result.failures);
-        for (const QString& f : result.failures)
-            failures << tr("%1: cannot read %2").arg(title, f);
-        for (const QString& d : result.disallowed)
-            failures << tr("%1 holds a value its profile does not allow, so the backup could "
-                           "not be restored: %2")
-                            .arg(title, d);
-        communication = communication || !result.failures.isEmpty();
-        drives << QJsonObject{{QStringLiteral("slave"), id},
-                              {QStringLiteral("family"), result.device.family},
-                              {QStringLiteral("variant"), result.device.variant},
-                              {QStringLiteral("model"), result.device.model},
-                              {QStringLiteral("parameters"), result.parameters},
-                              {QStringLiteral("read"), int(result.device.parameters.size())},
-                              {QStringLiteral("requests"), result.requests},
-                              {QStringLiteral("elapsedMs"), result.elapsedMs},
-                              {QStringLiteral("ok"), result.ok}};
-        if (!context.json() && result.failures.isEmpty())
-            context.out() << tr("%1: %2 settings read in %3 requests, %4 ms")
-                                 .arg(title)
-                                 .arg(result.parameters)
-                                 .arg(result.requests)
-                                 .arg(result.elapsedMs)
-                          << Qt::endl;
-        else if (!context.json())
-            context.out() << tr("%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)")
-                                 .arg(title)
-                                 .arg(result.device.parameters.size())
-                                 .arg(result.parameters)
-                                 .arg(result.requests)
-                                 .arg(result.elapsedMs)
-                          << Qt::endl;
-        if (result.ok)
-            file.devices << result.device;
+    });
+    poll.start(50);
+    reader.start(*ids, {}, [&loop](const QVector<DriveBatchReader::Drive>&) { loop.quit(); });
+    loop.exec();
+    if (lost)
+        return portLost(context, path, lostAt, lostWhy);
+    if (interrupted) {
+        context.err()
+            << tr("interrupted while reading machine number %1: nothing written").arg(current)
+            << Qt::endl;
+        return ExitInterrupted;
     }
 
     QString saveError;

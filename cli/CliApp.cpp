@@ -1,9 +1,9 @@
-#include "CliApp.h"
+#include "cli/CliApp.h"
 
-#include "CliCommands.h"
-#include "CliContext.h"
-#include "ConnectionOptions.h"
-#include "ExitCode.h"
+#include "cli/CliCommands.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "connection/ConnectionOptions.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

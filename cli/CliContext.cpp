@@ -1,16 +1,16 @@
-#include "CliContext.h"
+#include "cli/CliContext.h"
 
-#include "BackendFactory.h"
-#include "ConnectionOptions.h"
-#include "ModbusBackend.h"
-#include "ModbusClient.h"
-#include "SimBus.h"
-#include "TrafficLog.h"
-#include "bus/BusMemory.h"
-#include "bus/BusSpec.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceIdentifier.h"
-#include "session/DeviceSession.h"
+#include "connection/BackendFactory.h"
+#include "connection/ConnectionOptions.h"
+#include "model/bus/BusMemory.h"
+#include "model/bus/BusSpec.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceIdentifier.h"
+#include "model/session/DeviceSession.h"
+#include "sim/SimBus.h"
+#include "transport/ModbusBackend.h"
+#include "transport/ModbusClient.h"
+#include "transport/TrafficLog.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>

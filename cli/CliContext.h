@@ -1,11 +1,11 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "ExitCode.h"
-#include "bus/BusGroups.h"
-#include "session/DeviceInfo.h"
-#include "session/GroupReach.h"
-#include "traffic/TrafficDescriber.h"
+#include "cli/ExitCode.h"
+#include "model/bus/BusGroups.h"
+#include "model/session/DeviceInfo.h"
+#include "model/session/GroupReach.h"
+#include "model/traffic/TrafficDescriber.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QCommandLineParser>
 #include <QHash>

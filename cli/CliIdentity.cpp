@@ -1,6 +1,6 @@
-#include "CliIdentity.h"
+#include "cli/CliIdentity.h"
 
-#include "CliContext.h"
+#include "cli/CliContext.h"
 
 #include <cstdio>
 #include <termios.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "access/AccessCheck.h"
+#include "model/access/AccessCheck.h"
 
 #include <QCommandLineOption>
 #include <QCoreApplication>

@@ -1,13 +1,13 @@
-#include "CompareCommand.h"
+#include "cli/CompareCommand.h"
 
-#include "CliContext.h"
-#include "ExitCode.h"
-#include "FileCommandSupport.h"
-#include "TextTable.h"
-#include "bus/DriveName.h"
-#include "files/BackupReader.h"
-#include "files/Comparer.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "cli/FileCommandSupport.h"
+#include "cli/TextTable.h"
+#include "model/bus/DriveName.h"
+#include "model/files/Comparer.h"
+#include "model/files/DriveBatchReader.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -49,17 +49,12 @@ std::optional<CompareCommand::Side> CompareCommand::readDrive(CliContext& contex
     *code = ExitCommunication;
     if (!context.connectBus())
         return std::nullopt;
-    QString error;
-    DeviceSession* session = context.session(slave, &error);
-    if (!session) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
-        return std::nullopt;
-    }
-    BackupReader reader(session);
-    BackupReader::Result result;
-    const bool completed = context.wait([&reader, &result](std::function<void()> finish) {
-        reader.read([&result, finish](const BackupReader::Result& r) {
-            result = r;
+    DriveBatchReader reader(
+        [&context](int id, QString* error) { return context.session(id, error); });
+    QVector<DriveBatchReader::Drive> drives;
+    const bool completed = context.wait([&reader, &drives, slave](std::function<void()> finish) {
+        reader.start({slave}, {}, [&drives, finish](const QVector<DriveBatchReader::Drive>& d) {
+            drives = d;
             finish();
         });
     });
@@ -68,12 +63,13 @@ std::optional<CompareCommand::Side> CompareCommand::readDrive(CliContext& contex
         context.err() << tr("interrupted") << Qt::endl;
         return std::nullopt;
     }
-    if (!result.failures.isEmpty()) {
-        for (const QString& f : result.failures)
-            context.err() << tr("error: %1: cannot read %2").arg(result.device.title(), f)
-                          << Qt::endl;
+    const DriveBatchReader::Drive drive = drives.value(0);
+    if (!drive.error.isEmpty() || !drive.read.failures.isEmpty()) {
+        for (const QString& problem : drive.problems())
+            context.err() << tr("error: %1").arg(problem) << Qt::endl;
         return std::nullopt;
     }
+    const BackupReader::Result& result = drive.read;
     return Side{tr("drive %1").arg(DriveName::listed(slave, context.machineNames().value(slave))),
                 result.device};
 }

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "CliCommand.h"
-#include "files/BackupDevice.h"
+#include "cli/CliCommand.h"
+#include "model/files/BackupDevice.h"
 
 #include <optional>
 

@@ -1,9 +1,9 @@
-#include "AlarmsCommand.h"
-#include "CliCommands.h"
-#include "MonitorCommand.h"
-#include "RunCommand.h"
-#include "StopAllCommand.h"
-#include "TuneCommand.h"
+#include "cli/AlarmsCommand.h"
+#include "cli/CliCommands.h"
+#include "cli/MonitorCommand.h"
+#include "cli/RunCommand.h"
+#include "cli/StopAllCommand.h"
+#include "cli/TuneCommand.h"
 
 namespace opentop {
 

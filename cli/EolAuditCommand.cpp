@@ -1,12 +1,12 @@
-#include "EolAuditCommand.h"
+#include "cli/EolAuditCommand.h"
 
-#include "CliContext.h"
-#include "EolResultsCommand.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "TextTable.h"
-#include "access/AuditTrail.h"
-#include "eol/ResultDatabase.h"
+#include "cli/CliContext.h"
+#include "cli/EolResultsCommand.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "cli/TextTable.h"
+#include "model/access/AuditTrail.h"
+#include "model/eol/ResultDatabase.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

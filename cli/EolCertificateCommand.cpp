@@ -1,14 +1,14 @@
-#include "EolCertificateCommand.h"
+#include "cli/EolCertificateCommand.h"
 
-#include "CertificatePdf.h"
-#include "CliContext.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "eol/CertificateHtml.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/UnitRecordJson.h"
-#include "files/OutputFile.h"
+#include "cli/CliContext.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "model/eol/CertificateHtml.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/UnitRecordJson.h"
+#include "model/io/OutputFile.h"
+#include "report/CertificatePdf.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>

@@ -1,7 +1,7 @@
-#include "EolCommand.h"
+#include "cli/EolCommand.h"
 
-#include "CliContext.h"
-#include "ExitCode.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
 
 #include <QCoreApplication>
 #include <QSet>

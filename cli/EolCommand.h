@@ -1,7 +1,7 @@
 #pragma once
 
-#include "CliCommand.h"
-#include "EolSubcommand.h"
+#include "cli/CliCommand.h"
+#include "cli/EolSubcommand.h"
 
 #include <memory>
 #include <vector>

@@ -1,13 +1,13 @@
-#include "EolRecipeApproveCommand.h"
+#include "cli/EolRecipeApproveCommand.h"
 
-#include "CliContext.h"
-#include "CliIdentity.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "access/AccessCheck.h"
-#include "eol/RecipeChecker.h"
-#include "eol/ResultDatabase.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "cli/CliIdentity.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "model/access/AccessCheck.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

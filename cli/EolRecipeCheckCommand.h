@@ -1,6 +1,6 @@
 #pragma once
 
-#include "EolSubcommand.h"
+#include "cli/EolSubcommand.h"
 
 namespace opentop {
 

@@ -1,20 +1,19 @@
-#include "EolRecipeCreateCommand.h"
+#include "cli/EolRecipeCreateCommand.h"
 
-#include "CliContext.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "FileCommandSupport.h"
-#include "ModbusClient.h"
-#include "eol/GoldenMeasure.h"
-#include "eol/RecipeBuilder.h"
-#include "eol/RecipeFile.h"
-#include "eol/VariantCheck.h"
-#include "files/BackupReader.h"
-#include "files/OutputFile.h"
-#include "profile/Profile.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceInfo.h"
-#include "session/DeviceSession.h"
+#include "cli/CliContext.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "cli/FileCommandSupport.h"
+#include "model/eol/GoldenMeasure.h"
+#include "model/eol/RecipeBuilder.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/RecipeFromDrives.h"
+#include "model/io/OutputFile.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceInfo.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -63,12 +62,12 @@ QList<QCommandLineOption> EolRecipeCreateCommand::options() const
     };
 }
 
-std::optional<QVector<BackupDevice>> EolRecipeCreateCommand::readDrives(CliContext& context,
-                                                                        const QVector<int>& ids,
-                                                                        int* exitCode,
-                                                                        QStringList* notes)
+std::optional<Recipe> EolRecipeCreateCommand::readGolden(CliContext& context,
+                                                         const QVector<int>& ids,
+                                                         const QString& product,
+                                                         const QString& revision, int* exitCode)
 {
-    QVector<BackupDevice> devices;
+    QVector<RecipeFromDrives::Golden> golden;
     for (int id : ids) {
         QString error;
         DeviceSession* session = context.session(id, &error);
@@ -77,76 +76,49 @@ std::optional<QVector<BackupDevice>> EolRecipeCreateCommand::readDrives(CliConte
             *exitCode = ExitCommunication;
             return std::nullopt;
         }
-        // The golden unit's variant becomes the recipe's: read, proven by the probe, or given
-        // by its creator with --variant; never guessed.
-        const DeviceInfo info = context.identify(id);
-        const Profile& profile = session->profile();
-        VariantDecision::Evidence evidence;
-        if (const ProfileVariant* v = profile.variant(info.variant);
-            v && !v->nameMatch.isEmpty() && info.name.startsWith(v->nameMatch))
-            evidence.reported = info.variant;
-        evidence.asserted = context.givenVariant(id, profile.family).value_or(QString());
-        evidence.operatorName = qEnvironmentVariable("USER");
-        RecipePosition golden;
-        golden.machineNumber = id;
-        golden.family = profile.family;
-        golden.variantProof = QStringLiteral("required");
-        VariantCheck check(context.client(), profile, golden, evidence);
-        VariantDecision::Decision decision;
-        context.wait([&check, &decision](std::function<void()> finish) {
-            check.run([&decision, finish](const VariantDecision::Decision& d) {
-                decision = d;
-                finish();
-            });
-        });
-        if (!decision.ok) {
-            context.err() << tr("error: machine number %1: %2; give its variant with --variant "
-                                "%1=VARIANT if you know it; nothing written")
-                                 .arg(id)
-                                 .arg(decision.failure)
-                          << Qt::endl;
-            *exitCode = ExitInvalid;
-            return std::nullopt;
-        }
-        session->setVariant(decision.variant);
-        if (!decision.variant.isEmpty())
-            notes->append(
-                tr("machine number %1: %2, %3 (%4)")
-                    .arg(id)
-                    .arg(decision.variant, variantSourceName(decision.source), decision.proof));
-        BackupReader reader(session);
-        BackupReader::Result result;
-        const bool completed = context.wait([&reader, &result](std::function<void()> finish) {
-            reader.read([&result, finish](const BackupReader::Result& r) {
-                result = r;
-                finish();
-            });
-        });
-        if (!completed) {
-            context.err()
-                << tr("interrupted while reading machine number %1: nothing written").arg(id)
-                << Qt::endl;
-            *exitCode = ExitInterrupted;
-            return std::nullopt;
-        }
-        const QString title = result.device.title();
-        for (const QString& f : result.failures)
-            context.err() << tr("error: %1: cannot read %2").arg(title, f) << Qt::endl;
-        for (const QString& d : result.disallowed)
-            context.err()
-                << tr("error: %1 holds a value its profile does not allow: %2").arg(title, d)
-                << Qt::endl;
-        if (!result.ok) {
-            context.err() << tr("nothing written") << Qt::endl;
-            *exitCode = result.failures.isEmpty() ? ExitInvalid : ExitCommunication;
-            return std::nullopt;
-        }
-        if (!context.json())
-            context.out() << tr("%1: %2 settings read").arg(title).arg(result.parameters)
-                          << Qt::endl;
-        devices << result.device;
+        golden.append({id,
+                       RecipeFromDrives::reportedVariant(session->profile(), context.identify(id)),
+                       context.givenVariant(id, session->profile().family).value_or(QString())});
     }
-    return devices;
+    RecipeFromDrives make(
+        context.client(), ProfileRegistry::builtIn(),
+        [&context](int id, QString* error) { return context.session(id, error); });
+    QObject::connect(
+        &make, &RecipeFromDrives::driveRead, &make, [&context](const DriveBatchReader::Drive& d) {
+            if (d.ok() && !context.json())
+                context.out()
+                    << tr("%1: %2 settings read").arg(d.read.device.title()).arg(d.read.parameters)
+                    << Qt::endl;
+        });
+    RecipeFromDrives::Result result;
+    const bool completed = context.wait([&](std::function<void()> finish) {
+        make.start(golden, product, revision, qEnvironmentVariable("USER"),
+                   [&result, finish](const RecipeFromDrives::Result& r) {
+                       result = r;
+                       finish();
+                   });
+    });
+    if (!completed) {
+        make.cancel();
+        context.err() << tr("interrupted while reading the golden unit: nothing written")
+                      << Qt::endl;
+        *exitCode = ExitInterrupted;
+        return std::nullopt;
+    }
+    for (const QString& line : result.variants)
+        context.err() << tr("note: %1").arg(line) << Qt::endl;
+    if (!result.recipe) {
+        for (const QString& problem : result.problems)
+            context.err() << tr("error: %1").arg(problem) << Qt::endl;
+        for (int id : result.unknownVariants)
+            context.err() << tr("give its variant with --variant %1=VARIANT").arg(id) << Qt::endl;
+        context.err() << tr("nothing written") << Qt::endl;
+        *exitCode = result.failure == RecipeFromDrives::Failure::Communication ? ExitCommunication
+                    : result.failure == RecipeFromDrives::Failure::Cancelled   ? ExitInterrupted
+                                                                               : ExitInvalid;
+        return std::nullopt;
+    }
+    return result.recipe;
 }
 
 bool EolRecipeCreateCommand::measure(CliContext& context, Recipe* recipe, double margin,
@@ -289,16 +261,9 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
             return usage(tr("--drives %1: %2").arg(parser.value(QStringLiteral("drives")), error));
         if (!context.connectBus())
             return ExitCommunication;
-        QStringList notes;
-        const std::optional<QVector<BackupDevice>> devices =
-            readDrives(context, *ids, &code, &notes);
-        if (!devices)
+        recipe = readGolden(context, *ids, product, revision, &code);
+        if (!recipe)
             return code;
-        recipe = builder.fromDevices(*devices, product, revision, &error);
-        // The recipe keeps how each variant was known when it was made.
-        if (recipe && !notes.isEmpty())
-            recipe->description =
-                tr("Made from a golden unit; variants: %1.").arg(notes.join(QStringLiteral("; ")));
         if (recipe && measuring && !measure(context, &*recipe, margin, &code, &measured))
             return code;
     }

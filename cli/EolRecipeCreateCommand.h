@@ -1,6 +1,6 @@
 #pragma once
 
-#include "EolSubcommand.h"
+#include "cli/EolSubcommand.h"
 
 #include <QJsonArray>
 #include <QVector>
@@ -8,7 +8,6 @@
 
 namespace opentop {
 
-class BackupDevice;
 class Recipe;
 
 // `eol recipe create (--from-backup FILE | --drives LIST) --product P --revision R -o FILE`:
@@ -31,11 +30,11 @@ public:
     int run(CliContext& context, const QStringList& args) override;
 
 private:
-    // The golden drives' settings read off the bus, each with its variant read, proven by the
-    // profile's probe or given with --variant (how, in `notes`); nullopt (with *exitCode) when
-    // one failed or its variant is not known.
-    static std::optional<QVector<BackupDevice>>
-    readDrives(CliContext& context, const QVector<int>& ids, int* exitCode, QStringList* notes);
+    // The recipe from the golden drives on the bus (RecipeFromDrives: variants proven, settings
+    // read); nullopt (with *exitCode) when a drive failed, said on stderr.
+    static std::optional<Recipe> readGolden(CliContext& context, const QVector<int>& ids,
+                                            const QString& product, const QString& revision,
+                                            int* exitCode);
     // Runs the golden unit through `recipe`'s steps and tightens its hold limits around what it
     // measured; false (with *exitCode) when it did not run or did not pass.
     static bool measure(CliContext& context, Recipe* recipe, double margin, int* exitCode,

@@ -1,13 +1,13 @@
-#include "EolRecipeShowCommand.h"
+#include "cli/EolRecipeShowCommand.h"
 
-#include "CliContext.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "FileCommandSupport.h"
-#include "TextTable.h"
-#include "eol/CertificateHtml.h"
-#include "eol/RecipeFile.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "cli/FileCommandSupport.h"
+#include "cli/TextTable.h"
+#include "model/eol/CertificateHtml.h"
+#include "model/eol/RecipeFile.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "EolSubcommand.h"
-#include "eol/Recipe.h"
+#include "cli/EolSubcommand.h"
+#include "model/eol/Recipe.h"
 
 namespace opentop {
 

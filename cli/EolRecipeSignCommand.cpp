@@ -1,11 +1,11 @@
-#include "EolRecipeSignCommand.h"
+#include "cli/EolRecipeSignCommand.h"
 
-#include "CliContext.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "FileCommandSupport.h"
-#include "eol/RecipeFile.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "cli/FileCommandSupport.h"
+#include "model/eol/RecipeFile.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QJsonObject>

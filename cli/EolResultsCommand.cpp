@@ -1,14 +1,14 @@
-#include "EolResultsCommand.h"
+#include "cli/EolResultsCommand.h"
 
-#include "CliContext.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "FileCommandSupport.h"
-#include "TextTable.h"
-#include "eol/CertificateHtml.h"
-#include "eol/ResultCsv.h"
-#include "eol/ResultDatabase.h"
-#include "eol/UnitRecordJson.h"
+#include "cli/CliContext.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "cli/FileCommandSupport.h"
+#include "cli/TextTable.h"
+#include "model/eol/CertificateHtml.h"
+#include "model/eol/ResultCsv.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "EolSubcommand.h"
-#include "eol/ResultQueries.h"
-#include "eol/YieldReport.h"
+#include "cli/EolSubcommand.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/YieldReport.h"
 
 #include <optional>
 

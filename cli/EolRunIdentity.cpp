@@ -1,11 +1,11 @@
-#include "EolRunIdentity.h"
+#include "cli/EolRunIdentity.h"
 
-#include "CliContext.h"
-#include "CliIdentity.h"
-#include "ExitCode.h"
-#include "access/AccessCheck.h"
-#include "eol/Recipe.h"
-#include "eol/ResultWriter.h"
+#include "cli/CliContext.h"
+#include "cli/CliIdentity.h"
+#include "cli/ExitCode.h"
+#include "model/access/AccessCheck.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/ResultWriter.h"
 
 #include <QEventLoop>
 #include <functional>

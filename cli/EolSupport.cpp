@@ -1,12 +1,12 @@
-#include "EolSupport.h"
+#include "cli/EolSupport.h"
 
-#include "CliContext.h"
-#include "ExitCode.h"
-#include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultUrl.h"
-#include "files/BackupFile.h"
-#include "profile/Profile.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultUrl.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/Profile.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/Recipe.h"
-#include "eol/RecipeChecker.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/RecipeChecker.h"
 
 #include <QCommandLineOption>
 #include <QCoreApplication>

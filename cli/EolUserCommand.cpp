@@ -1,12 +1,12 @@
-#include "EolUserCommand.h"
+#include "cli/EolUserCommand.h"
 
-#include "CliContext.h"
-#include "CliIdentity.h"
-#include "EolSupport.h"
-#include "ExitCode.h"
-#include "TextTable.h"
-#include "access/AccessCheck.h"
-#include "eol/ResultDatabase.h"
+#include "cli/CliContext.h"
+#include "cli/CliIdentity.h"
+#include "cli/EolSupport.h"
+#include "cli/ExitCode.h"
+#include "cli/TextTable.h"
+#include "model/access/AccessCheck.h"
+#include "model/eol/ResultDatabase.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,8 +1,8 @@
-#include "FileCommandSupport.h"
+#include "cli/FileCommandSupport.h"
 
-#include "CliContext.h"
-#include "ExitCode.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>

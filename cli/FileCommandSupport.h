@@ -1,7 +1,7 @@
 #pragma once
 
-#include "files/BackupFile.h"
-#include "files/RestorePlan.h"
+#include "model/files/BackupFile.h"
+#include "model/files/RestorePlan.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

@@ -1,7 +1,7 @@
-#include "BackupCommand.h"
-#include "CliCommands.h"
-#include "CompareCommand.h"
-#include "RestoreCommand.h"
+#include "cli/BackupCommand.h"
+#include "cli/CliCommands.h"
+#include "cli/CompareCommand.h"
+#include "cli/RestoreCommand.h"
 
 namespace opentop {
 

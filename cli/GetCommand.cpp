@@ -1,10 +1,10 @@
-#include "GetCommand.h"
+#include "cli/GetCommand.h"
 
-#include "CliContext.h"
-#include "ModbusClient.h"
-#include "TextTable.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "cli/CliContext.h"
+#include "cli/TextTable.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

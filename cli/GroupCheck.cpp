@@ -1,10 +1,10 @@
-#include "GroupCheck.h"
+#include "cli/GroupCheck.h"
 
-#include "CliContext.h"
-#include "TextTable.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "cli/CliContext.h"
+#include "cli/TextTable.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QJsonObject>

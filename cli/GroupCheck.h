@@ -1,8 +1,8 @@
 #pragma once
 
-#include "bus/BusGroups.h"
-#include "session/DeviceInfo.h"
-#include "session/ReachedDrives.h"
+#include "model/bus/BusGroups.h"
+#include "model/session/DeviceInfo.h"
+#include "model/session/ReachedDrives.h"
 
 #include <QHash>
 #include <QJsonArray>

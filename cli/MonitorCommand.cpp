@@ -1,9 +1,9 @@
-#include "MonitorCommand.h"
+#include "cli/MonitorCommand.h"
 
-#include "CliContext.h"
-#include "MonitorOutput.h"
-#include "monitor/DeviceMonitor.h"
-#include "session/DeviceSession.h"
+#include "cli/CliContext.h"
+#include "cli/MonitorOutput.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,11 +1,11 @@
-#include "MonitorOutput.h"
+#include "cli/MonitorOutput.h"
 
-#include "TerminalWidth.h"
+#include "cli/TerminalWidth.h"
 
-#include "monitor/DeviceMonitor.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <algorithm>

@@ -1,10 +1,10 @@
-#include "NameCommand.h"
+#include "cli/NameCommand.h"
 
-#include "CliContext.h"
-#include "ExitCode.h"
-#include "TextTable.h"
-#include "bus/BusMemory.h"
-#include "bus/DriveName.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "cli/TextTable.h"
+#include "model/bus/BusMemory.h"
+#include "model/bus/DriveName.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,8 +1,8 @@
-#include "CliCommands.h"
-#include "GetCommand.h"
-#include "ParamsCommand.h"
-#include "PortsCommand.h"
-#include "SetCommand.h"
+#include "cli/CliCommands.h"
+#include "cli/GetCommand.h"
+#include "cli/ParamsCommand.h"
+#include "cli/PortsCommand.h"
+#include "cli/SetCommand.h"
 
 namespace opentop {
 

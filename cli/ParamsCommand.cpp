@@ -1,9 +1,9 @@
-#include "ParamsCommand.h"
+#include "cli/ParamsCommand.h"
 
-#include "CliContext.h"
-#include "TextTable.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "cli/CliContext.h"
+#include "cli/TextTable.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

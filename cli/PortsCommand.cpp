@@ -1,8 +1,8 @@
-#include "PortsCommand.h"
+#include "cli/PortsCommand.h"
 
-#include "CliContext.h"
-#include "SerialPortList.h"
-#include "TextTable.h"
+#include "cli/CliContext.h"
+#include "cli/TextTable.h"
+#include "transport/SerialPortList.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,12 +1,12 @@
-#include "RestoreCommand.h"
+#include "cli/RestoreCommand.h"
 
-#include "CliContext.h"
-#include "ExitCode.h"
-#include "FileCommandSupport.h"
-#include "GroupCheck.h"
-#include "TextTable.h"
-#include "files/Restorer.h"
-#include "session/DeviceSession.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "cli/FileCommandSupport.h"
+#include "cli/GroupCheck.h"
+#include "cli/TextTable.h"
+#include "model/files/BusRestore.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -42,32 +42,6 @@ QList<QCommandLineOption> RestoreCommand::options() const
              tr("LIST")},
             {QStringLiteral("dry-run"), tr("Read the drives and show the plan; write nothing.")},
             {QStringLiteral("yes"), tr("Write the plan (without it restore only shows it).")}};
-}
-
-RestorePlan RestoreCommand::restore(CliContext& context, DeviceSession* session,
-                                    const BackupDevice& device, bool dryRun)
-{
-    Restorer restorer(session);
-    RestorePlan result;
-    bool finished = false;
-    QEventLoop loop;
-    // Ctrl-C cancels between transactions; the restorer then reports what it did.
-    QTimer poll;
-    QObject::connect(&poll, &QTimer::timeout, &loop, [&restorer, &context] {
-        if (context.interrupted())
-            restorer.cancel();
-    });
-    poll.start(50);
-    Restorer::Options options;
-    options.dryRun = dryRun;
-    restorer.start(device, options, [&](const RestorePlan& plan) {
-        result = plan;
-        finished = true;
-        loop.quit();
-    });
-    if (!finished)
-        loop.exec();
-    return result;
 }
 
 void RestoreCommand::printPlan(CliContext& context, const RestorePlan& plan, bool report)
@@ -180,34 +154,34 @@ int RestoreCommand::run(CliContext& context, const QStringList& args)
     if (!context.connectBus())
         return ExitCommunication;
 
-    // Every drive is checked before any is written: a refused file writes nothing at all.
-    QVector<DeviceSession*> sessions;
-    QJsonArray drives;
-    bool refused = false;
+    // Every write to a group parent is executed by its children too: say so (--yes is what
+    // makes a restore write at all).
+    QVector<BusRestore::Job> jobs;
     for (int id : ids) {
         QString error;
-        DeviceSession* session = context.session(id, &error);
-        if (!session) {
+        if (!context.session(id, &error)) {
             context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;
             return ExitCommunication;
         }
-        const RestorePlan check =
-            RestorePlan::check(session->profile(), session->variant(), *file->device(id));
-        if (check.refused()) {
-            refused = true;
+        GroupCheck group(context);
+        if (const int bad = group.before(id, true, ExitInvalid); bad != ExitOk)
+            return bad;
+        jobs.append({id, *file->device(id)});
+    }
+    BusRestore restore([&context](int id) {
+        QString ignored;
+        return context.session(id, &ignored);
+    });
+    // Every drive is checked before any is written: a refused file writes nothing at all.
+    QJsonArray drives;
+    const QVector<RestorePlan> refusals = restore.check(jobs);
+    if (!refusals.isEmpty()) {
+        for (const RestorePlan& check : refusals) {
             drives << FileCommandSupport::planJson(check);
             context.err() << tr("error: %1: %2").arg(check.title, check.reason) << Qt::endl;
             for (const QString& problem : check.problems)
                 context.err() << "  " << problem << Qt::endl;
         }
-        // Every write to a group parent is executed by its children too: say so (--yes is
-        // what makes a restore write at all).
-        GroupCheck group(context);
-        if (const int bad = group.before(id, true, ExitInvalid); bad != ExitOk)
-            return bad;
-        sessions << session;
-    }
-    if (refused) {
         if (context.json())
             FileCommandSupport::printJson(context,
                                           {{QStringLiteral("command"), QStringLiteral("restore")},
@@ -216,32 +190,33 @@ int RestoreCommand::run(CliContext& context, const QStringList& args)
         return ExitInvalid;
     }
 
-    code = ExitOk;
-    for (int i = 0; i < ids.size(); ++i) {
-        const BackupDevice& device = *file->device(ids.at(i));
-        if (code == ExitCommunication || code == ExitInterrupted) {
-            // The bus failed or the user stopped: later drives are left alone, and said so.
-            RestorePlan skipped;
-            skipped.slave = device.slave;
-            skipped.title = device.title();
-            skipped.outcome = RestorePlan::Outcome::Interrupted;
-            skipped.reason = tr("not attempted");
-            drives << FileCommandSupport::planJson(skipped);
-            if (!context.json())
-                context.out() << tr("%1: not attempted").arg(device.title()) << Qt::endl;
-            continue;
-        }
-        const RestorePlan plan = restore(context, sessions.at(i), device, dryRun);
-        drives << FileCommandSupport::planJson(plan);
-        if (!context.json())
-            printPlan(context, plan, !dryRun && !plan.refused());
-        // The most serious outcome of any drive decides.
-        static const QVector<int> severity{ExitOk, ExitInvalid, ExitMismatch, ExitCommunication,
-                                           ExitInterrupted};
-        const int driveCode = exitCodeOf(plan);
-        if (severity.indexOf(driveCode) > severity.indexOf(code))
-            code = driveCode;
-    }
+    QObject::connect(&restore, &BusRestore::driveFinished, &restore,
+                     [&context, &drives, dryRun](const RestorePlan& plan) {
+                         drives << FileCommandSupport::planJson(plan);
+                         if (context.json())
+                             return;
+                         if (!plan.attempted)
+                             context.out() << tr("%1: not attempted").arg(plan.title) << Qt::endl;
+                         else
+                             printPlan(context, plan, !dryRun && !plan.refused());
+                     });
+    QVector<RestorePlan> plans;
+    QEventLoop loop;
+    // Ctrl-C cancels between transactions; the restore then reports what it did.
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&restore, &context] {
+        if (context.interrupted())
+            restore.cancel();
+    });
+    poll.start(50);
+    restore.start(jobs, dryRun, [&plans, &loop](const QVector<RestorePlan>& p) {
+        plans = p;
+        loop.quit();
+    });
+    loop.exec();
+    RestorePlan worst;
+    worst.outcome = BusRestore::worst(plans);
+    code = exitCodeOf(worst);
     if (context.json()) {
         FileCommandSupport::printJson(context,
                                       {{QStringLiteral("command"), QStringLiteral("restore")},

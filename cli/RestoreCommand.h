@@ -1,7 +1,7 @@
 #pragma once
 
-#include "CliCommand.h"
-#include "files/RestorePlan.h"
+#include "cli/CliCommand.h"
+#include "model/files/RestorePlan.h"
 
 namespace opentop {
 
@@ -23,9 +23,6 @@ public:
     int run(CliContext& context, const QStringList& args) override;
 
 private:
-    // Runs a Restorer to its end; Ctrl-C cancels it between transactions.
-    static RestorePlan restore(CliContext& context, DeviceSession* session,
-                               const BackupDevice& device, bool dryRun);
     static void printPlan(CliContext& context, const RestorePlan& plan, bool report);
     static int exitCodeOf(const RestorePlan& plan);
 };

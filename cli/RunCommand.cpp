@@ -1,11 +1,11 @@
-#include "RunCommand.h"
+#include "cli/RunCommand.h"
 
-#include "CliContext.h"
-#include "GroupCheck.h"
-#include "profile/ProfileRegistry.h"
-#include "run/GroupFollowers.h"
-#include "run/RunControl.h"
-#include "session/DeviceSession.h"
+#include "cli/CliContext.h"
+#include "cli/GroupCheck.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/run/GroupFollowers.h"
+#include "model/run/RunControl.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

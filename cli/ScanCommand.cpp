@@ -1,16 +1,16 @@
-#include "ScanCommand.h"
+#include "cli/ScanCommand.h"
 
-#include "CliContext.h"
-#include "GroupCheck.h"
-#include "ModbusClient.h"
-#include "ScanDrives.h"
-#include "ScanFormats.h"
-#include "ScanProgress.h"
-#include "TextTable.h"
-#include "bus/BusGroups.h"
-#include "bus/BusScanner.h"
-#include "bus/FixedLineHint.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "cli/GroupCheck.h"
+#include "cli/ScanDrives.h"
+#include "cli/ScanFormats.h"
+#include "cli/ScanProgress.h"
+#include "cli/TextTable.h"
+#include "model/bus/BusGroups.h"
+#include "model/bus/BusScanner.h"
+#include "model/bus/FixedLineHint.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "CliCommand.h"
-#include "session/DeviceInfo.h"
+#include "cli/CliCommand.h"
+#include "model/session/DeviceInfo.h"
 
 #include <QHash>
 #include <QVector>

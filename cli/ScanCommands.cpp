@@ -1,6 +1,6 @@
-#include "CliCommands.h"
-#include "NameCommand.h"
-#include "ScanCommand.h"
+#include "cli/CliCommands.h"
+#include "cli/NameCommand.h"
+#include "cli/ScanCommand.h"
 
 namespace opentop {
 

@@ -1,7 +1,7 @@
-#include "ScanDrives.h"
+#include "cli/ScanDrives.h"
 
-#include "CliContext.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 

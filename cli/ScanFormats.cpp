@@ -1,10 +1,10 @@
-#include "ScanFormats.h"
+#include "cli/ScanFormats.h"
 
-#include "CliContext.h"
-#include "ModbusClient.h"
-#include "bus/BusScanner.h"
-#include "bus/LineFormatHint.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliContext.h"
+#include "model/bus/BusScanner.h"
+#include "model/bus/LineFormatHint.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
 #include <algorithm>

@@ -1,19 +1,20 @@
-#include "SetCommand.h"
+#include "cli/SetCommand.h"
 
-#include "CliContext.h"
-#include "GroupCheck.h"
-#include "ModbusClient.h"
-#include "SetRaw.h"
-#include "TextTable.h"
-#include "files/RestorePlan.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "run/RunningData.h"
-#include "session/DependentValues.h"
-#include "session/DeviceSession.h"
-#include "session/ParameterInitialiser.h"
-#include "session/ReachedDrives.h"
-#include "session/SerialLock.h"
+#include "cli/CliContext.h"
+#include "cli/GroupCheck.h"
+#include "cli/SetRaw.h"
+#include "cli/TextTable.h"
+#include "model/files/RestorePlan.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/RunningData.h"
+#include "model/profile/ValueCodec.h"
+#include "model/profile/WriteOrder.h"
+#include "model/session/DependentValues.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/ParameterInitialiser.h"
+#include "model/session/ReachedDrives.h"
+#include "model/session/SerialLock.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -213,10 +214,16 @@ int SetCommand::run(CliContext& context, const QStringList& args)
     }
     // Writes that others depend on go first; each value is validated against what the drive
     // will hold when it is written.
-    std::stable_sort(
-        assignments.begin(), assignments.end(), [](const Assignment& x, const Assignment& y) {
-            return x.meta && y.meta && y.meta->controllingParameters().contains(x.name);
-        });
+    {
+        QStringList given;
+        for (const Assignment& a : assignments)
+            given << a.name;
+        const QStringList order = WriteOrder::of(session->profile(), given);
+        std::sort(assignments.begin(), assignments.end(),
+                  [&order](const Assignment& x, const Assignment& y) {
+                      return order.indexOf(x.name) < order.indexOf(y.name);
+                  });
+    }
     if (problems.isEmpty()) {
         QHash<QString, qint64> pending;
         ValueContext overlay = session->context();

@@ -1,12 +1,12 @@
-#include "SetRaw.h"
+#include "cli/SetRaw.h"
 
-#include "CliContext.h"
-#include "GroupCheck.h"
-#include "ModbusClient.h"
-#include "TextTable.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
-#include "session/ReachedDrives.h"
+#include "cli/CliContext.h"
+#include "cli/GroupCheck.h"
+#include "cli/TextTable.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/ReachedDrives.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
 

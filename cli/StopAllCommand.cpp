@@ -1,11 +1,11 @@
-#include "StopAllCommand.h"
+#include "cli/StopAllCommand.h"
 
-#include "CliContext.h"
-#include "ConnectionSettings.h"
-#include "TextTable.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
-#include "run/RunControl.h"
+#include "cli/CliContext.h"
+#include "cli/TextTable.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "model/run/RunControl.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

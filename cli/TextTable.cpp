@@ -1,6 +1,6 @@
-#include "TextTable.h"
+#include "cli/TextTable.h"
 
-#include "TerminalWidth.h"
+#include "cli/TerminalWidth.h"
 
 #include <QTextStream>
 #include <algorithm>

@@ -1,10 +1,10 @@
-#include "TuneCommand.h"
+#include "cli/TuneCommand.h"
 
-#include "CliContext.h"
-#include "files/OutputFile.h"
-#include "session/DeviceSession.h"
-#include "tuning/TuningRunner.h"
-#include "tuning/TuningVerdict.h"
+#include "cli/CliContext.h"
+#include "model/io/OutputFile.h"
+#include "model/session/DeviceSession.h"
+#include "model/tuning/TuningRunner.h"
+#include "model/tuning/TuningVerdict.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>

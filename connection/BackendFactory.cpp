@@ -1,10 +1,10 @@
-#include "BackendFactory.h"
+#include "connection/BackendFactory.h"
 
-#include "ModbusClient.h"
-#include "RtuBackend.h"
-#include "SimBackend.h"
-#include "SimBus.h"
-#include "TcpBackend.h"
+#include "sim/SimBackend.h"
+#include "sim/SimBus.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
+#include "transport/TcpBackend.h"
 
 namespace opentop {
 

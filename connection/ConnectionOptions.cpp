@@ -1,9 +1,9 @@
-#include "ConnectionOptions.h"
+#include "connection/ConnectionOptions.h"
 
-#include "SimBus.h"
+#include "sim/SimBus.h"
 
-#include "bus/BusSpec.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusSpec.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 

@@ -1,3 +1,3 @@
-#include "ModelLog.h"
+#include "model/ModelLog.h"
 
 Q_LOGGING_CATEGORY(lcModel, "opentop.model", QtInfoMsg)

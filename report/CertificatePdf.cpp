@@ -1,7 +1,7 @@
-#include "CertificatePdf.h"
+#include "report/CertificatePdf.h"
 
-#include "eol/CertificateHtml.h"
-#include "files/OutputFile.h"
+#include "model/eol/CertificateHtml.h"
+#include "model/io/OutputFile.h"
 
 #include <QBuffer>
 #include <QFont>

@@ -1,4 +1,4 @@
-#include "DbuMotor.h"
+#include "sim/DbuMotor.h"
 
 #include <algorithm>
 #include <cmath>

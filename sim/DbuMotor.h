@@ -1,7 +1,7 @@
 #pragma once
 
-#include "SimDefects.h"
-#include "SpeedRamp.h"
+#include "sim/SimDefects.h"
+#include "sim/SpeedRamp.h"
 
 #include <QVector>
 

@@ -1,6 +1,6 @@
-#include "DbuSimDevice.h"
+#include "sim/DbuSimDevice.h"
 
-#include "SimLog.h"
+#include "sim/SimLog.h"
 
 #include <QRegularExpression>
 #include <algorithm>

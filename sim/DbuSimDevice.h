@@ -1,9 +1,9 @@
 #pragma once
 
-#include "DbuMotor.h"
-#include "DbuTerminals.h"
-#include "SimCodeRecords.h"
-#include "SimDevice.h"
+#include "sim/DbuMotor.h"
+#include "sim/DbuTerminals.h"
+#include "sim/SimCodeRecords.h"
+#include "sim/SimDevice.h"
 
 #include <optional>
 

@@ -1,6 +1,6 @@
-#include "DbuTerminals.h"
+#include "sim/DbuTerminals.h"
 
-#include "SimDevice.h"
+#include "sim/SimDevice.h"
 
 namespace opentop {
 

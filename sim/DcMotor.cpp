@@ -1,4 +1,4 @@
-#include "DcMotor.h"
+#include "sim/DcMotor.h"
 
 #include <QRegularExpression>
 #include <QStringList>

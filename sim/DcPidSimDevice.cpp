@@ -1,9 +1,9 @@
-#include "DcPidSimDevice.h"
+#include "sim/DcPidSimDevice.h"
 
-#include "DeviceIdentification.h"
-#include "ModbusRequest.h"
-#include "SimLog.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
+#include "sim/SimLog.h"
+#include "transport/DeviceIdentification.h"
+#include "transport/ModbusRequest.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "DcMotor.h"
-#include "DcSpeedLoop.h"
-#include "SimDevice.h"
+#include "sim/DcMotor.h"
+#include "sim/DcSpeedLoop.h"
+#include "sim/SimDevice.h"
 
 namespace opentop {
 

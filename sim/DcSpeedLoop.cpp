@@ -1,4 +1,4 @@
-#include "DcSpeedLoop.h"
+#include "sim/DcSpeedLoop.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "GenericSimDevice.h"
+#include "sim/GenericSimDevice.h"
 
 namespace opentop {
 

@@ -1,4 +1,4 @@
-#include "ManualSimClock.h"
+#include "sim/ManualSimClock.h"
 
 namespace opentop {
 

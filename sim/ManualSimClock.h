@@ -1,6 +1,6 @@
 #pragma once
 
-#include "SimClock.h"
+#include "sim/SimClock.h"
 
 #include <atomic>
 

@@ -1,10 +1,10 @@
-#include "PtySimServer.h"
+#include "sim/PtySimServer.h"
 
-#include "IoctlSerialDriver.h"
+#include "transport/IoctlSerialDriver.h"
 
-#include "ModbusCrc.h"
-#include "SimBus.h"
-#include "SimLog.h"
+#include "sim/SimBus.h"
+#include "sim/SimLog.h"
+#include "transport/ModbusCrc.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ReplyScheduler.h"
-#include "WireTiming.h"
+#include "sim/ReplyScheduler.h"
+#include "sim/WireTiming.h"
 
 #include <QByteArray>
 #include <QObject>

@@ -1,6 +1,6 @@
-#include "ReplyScheduler.h"
+#include "sim/ReplyScheduler.h"
 
-#include "SimLog.h"
+#include "sim/SimLog.h"
 
 #include <QSocketNotifier>
 #include <algorithm>

@@ -1,12 +1,12 @@
-#include "SimApp.h"
+#include "sim/SimApp.h"
 
-#include "DcPidSimDevice.h"
+#include "sim/DcPidSimDevice.h"
 
-#include "PtySimServer.h"
-#include "SimBus.h"
-#include "SimConsole.h"
-#include "SimLog.h"
-#include "TcpSimServer.h"
+#include "sim/PtySimServer.h"
+#include "sim/SimBus.h"
+#include "sim/SimConsole.h"
+#include "sim/SimLog.h"
+#include "sim/TcpSimServer.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>

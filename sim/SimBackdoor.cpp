@@ -1,6 +1,6 @@
-#include "SimBackdoor.h"
+#include "sim/SimBackdoor.h"
 
-#include "SimDevice.h"
+#include "sim/SimDevice.h"
 
 namespace opentop {
 

@@ -1,8 +1,8 @@
-#include "SimBackend.h"
+#include "sim/SimBackend.h"
 
-#include "RtuFrame.h"
-#include "SimBus.h"
-#include "SimLog.h"
+#include "sim/SimBus.h"
+#include "sim/SimLog.h"
+#include "transport/RtuFrame.h"
 
 #include <QElapsedTimer>
 

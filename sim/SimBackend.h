@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ModbusBackend.h"
-#include "WireTiming.h"
+#include "sim/WireTiming.h"
+#include "transport/ModbusBackend.h"
 
 #include <QCoreApplication>
 #include <memory>

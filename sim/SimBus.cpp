@@ -1,14 +1,14 @@
-#include "SimBus.h"
+#include "sim/SimBus.h"
 
-#include "DbuSimDevice.h"
-#include "DcPidSimDevice.h"
-#include "GenericSimDevice.h"
-#include "ModbusCrc.h"
-#include "ModbusRequest.h"
-#include "SimLog.h"
-#include "SteadySimClock.h"
-#include "bus/BusSpec.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusSpec.h"
+#include "model/profile/ProfileRegistry.h"
+#include "sim/DbuSimDevice.h"
+#include "sim/DcPidSimDevice.h"
+#include "sim/GenericSimDevice.h"
+#include "sim/SimLog.h"
+#include "sim/SteadySimClock.h"
+#include "transport/ModbusCrc.h"
+#include "transport/ModbusRequest.h"
 
 namespace opentop {
 

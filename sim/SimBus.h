@@ -1,8 +1,8 @@
 #pragma once
 
-#include "FaultInjector.h"
-#include "SimClock.h"
-#include "SimDevice.h"
+#include "sim/FaultInjector.h"
+#include "sim/SimClock.h"
+#include "sim/SimDevice.h"
 
 #include <QByteArray>
 #include <QCoreApplication>

@@ -1,6 +1,6 @@
-#include "SimCodeRecords.h"
+#include "sim/SimCodeRecords.h"
 
-#include "SimDevice.h"
+#include "sim/SimDevice.h"
 
 #include <QStringList>
 

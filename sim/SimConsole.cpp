@@ -1,6 +1,6 @@
-#include "SimConsole.h"
+#include "sim/SimConsole.h"
 
-#include "SimBus.h"
+#include "sim/SimBus.h"
 
 #include <QMutexLocker>
 #include <QRegularExpression>

@@ -1,4 +1,4 @@
-#include "SimDefectSpec.h"
+#include "sim/SimDefectSpec.h"
 
 #include <QRegularExpression>
 #include <cmath>

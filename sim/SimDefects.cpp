@@ -1,7 +1,7 @@
-#include "SimDefects.h"
+#include "sim/SimDefects.h"
 
-#include "SimDevice.h"
-#include "profile/Profile.h"
+#include "model/profile/Profile.h"
+#include "sim/SimDevice.h"
 
 #include <QRegularExpression>
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "SimDefectSpec.h"
+#include "sim/SimDefectSpec.h"
 
 #include <QCoreApplication>
 #include <QStringList>

@@ -1,10 +1,10 @@
-#include "SimDevice.h"
+#include "sim/SimDevice.h"
 
-#include "ModbusRequest.h"
-#include "SimBackdoor.h"
-#include "SimLog.h"
-#include "SimRequestHandler.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
+#include "sim/SimBackdoor.h"
+#include "sim/SimLog.h"
+#include "sim/SimRequestHandler.h"
+#include "transport/ModbusRequest.h"
 
 #include <algorithm>
 

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "LineFormat.h"
-#include "SimDefects.h"
-#include "SimRegisters.h"
-#include "profile/Profile.h"
-#include "profile/ValueContext.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueContext.h"
+#include "sim/SimDefects.h"
+#include "sim/SimRegisters.h"
+#include "transport/LineFormat.h"
 
 #include <QByteArray>
 #include <QCoreApplication>

@@ -1,3 +1,3 @@
-#include "SimLog.h"
+#include "sim/SimLog.h"
 
 Q_LOGGING_CATEGORY(lcSim, "opentop.sim", QtInfoMsg)

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "DcMotor.h"
-#include "FaultInjector.h"
-#include "SimDefectSpec.h"
+#include "sim/DcMotor.h"
+#include "sim/FaultInjector.h"
+#include "sim/SimDefectSpec.h"
 
 #include <QCoreApplication>
 #include <QPair>

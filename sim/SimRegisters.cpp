@@ -1,6 +1,6 @@
-#include "SimRegisters.h"
+#include "sim/SimRegisters.h"
 
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
 
 namespace opentop {
 

@@ -1,10 +1,10 @@
-#include "SimRequestHandler.h"
+#include "sim/SimRequestHandler.h"
 
-#include "ModbusCrc.h"
-#include "ModbusRequest.h"
-#include "SimDevice.h"
-#include "SimLog.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
+#include "sim/SimDevice.h"
+#include "sim/SimLog.h"
+#include "transport/ModbusCrc.h"
+#include "transport/ModbusRequest.h"
 
 namespace opentop {
 

@@ -1,4 +1,4 @@
-#include "SpeedRamp.h"
+#include "sim/SpeedRamp.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "SteadySimClock.h"
+#include "sim/SteadySimClock.h"
 
 namespace opentop {
 

@@ -1,8 +1,8 @@
-#include "TcpSimServer.h"
+#include "sim/TcpSimServer.h"
 
-#include "ModbusCrc.h"
-#include "SimBus.h"
-#include "SimLog.h"
+#include "sim/SimBus.h"
+#include "sim/SimLog.h"
+#include "transport/ModbusCrc.h"
 
 #include <QCoreApplication>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "WireTiming.h"
+#include "sim/WireTiming.h"
 
 #include <QHash>
 #include <QHostAddress>

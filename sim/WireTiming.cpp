@@ -1,4 +1,4 @@
-#include "WireTiming.h"
+#include "sim/WireTiming.h"
 
 namespace opentop {
 

@@ -4,28 +4,28 @@
 <context>
     <name>Freshness</name>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="29"/>
-        <location filename="../model/monitor/Freshness.cpp" line="31"/>
+        <location filename="../model/session/Freshness.cpp" line="29"/>
+        <location filename="../model/session/Freshness.cpp" line="31"/>
         <source>%1 s old</source>
         <translation>%1 s前</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="33"/>
+        <location filename="../model/session/Freshness.cpp" line="33"/>
         <source>%1 min old</source>
         <translation>%1 min前</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="34"/>
+        <location filename="../model/session/Freshness.cpp" line="34"/>
         <source>%1 h old</source>
         <translation>%1 h前</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="40"/>
+        <location filename="../model/session/Freshness.cpp" line="40"/>
         <source>never read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="41"/>
+        <location filename="../model/session/Freshness.cpp" line="41"/>
         <source>last answer %1 (%2)</source>
         <translation>最終応答 %1 (%2)</translation>
     </message>
@@ -445,7 +445,7 @@
         <translation>%1: &quot;label&quot; と &quot;meaning&quot; は空にできません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="57"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="57"/>
         <source> and %1 more</source>
         <translation> ほか %1 件</translation>
     </message>
@@ -1422,105 +1422,95 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="34"/>
+        <location filename="../cli/BackupCommand.cpp" line="36"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>ドライバの全設定をバックアップファイルに保存します（すべて読み出せた場合のみ書き込みます）</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="40"/>
+        <location filename="../cli/BackupCommand.cpp" line="42"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>書き込むバックアップファイル（アトミックに置き換えます）。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="41"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="45"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>接続先が把握しているすべてのドライバ（シミュレーションバス）、またはスキャンで見つかったすべてのドライバ。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="51"/>
+        <location filename="../cli/BackupCommand.cpp" line="53"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>エラー: 局番を指定するか、--all を指定してください: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="60"/>
-        <location filename="../cli/BackupCommand.cpp" line="226"/>
-        <location filename="../cli/BackupCommand.cpp" line="232"/>
+        <location filename="../cli/BackupCommand.cpp" line="62"/>
+        <location filename="../cli/BackupCommand.cpp" line="243"/>
+        <location filename="../cli/BackupCommand.cpp" line="249"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="69"/>
+        <location filename="../cli/BackupCommand.cpp" line="71"/>
         <source>scanning the bus for drives…</source>
         <translation>バスのドライバをスキャン中…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="84"/>
+        <location filename="../cli/BackupCommand.cpp" line="86"/>
         <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
         <translation>警告: 局番 %1 は応答しましたが、識別に失敗しました: バックアップしていません。この局番を指定して再試行してください (backup %1 -o FILE)。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="105"/>
+        <location filename="../cli/BackupCommand.cpp" line="107"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>エラー: %2 の読出し中にポート %1 が失われました (%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="108"/>
-        <location filename="../cli/BackupCommand.cpp" line="228"/>
+        <location filename="../cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="245"/>
         <source>nothing written to %1</source>
         <translation>%1 には何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="116"/>
+        <location filename="../cli/BackupCommand.cpp" line="118"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>エラー: 書き込むファイルを指定してください: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="120"/>
+        <location filename="../cli/BackupCommand.cpp" line="122"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="132"/>
+        <location filename="../cli/BackupCommand.cpp" line="134"/>
         <source>interrupted: nothing written</source>
         <translation>中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="136"/>
+        <location filename="../cli/BackupCommand.cpp" line="138"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>エラー: %1 で応答するドライバがありません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="155"/>
+        <location filename="../cli/BackupCommand.cpp" line="164"/>
         <source>machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="170"/>
+        <location filename="../cli/BackupCommand.cpp" line="224"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="178"/>
-        <source>%1: cannot read %2</source>
-        <translation>%1: %2 を読み出せません</translation>
-    </message>
-    <message>
-        <location filename="../cli/BackupCommand.cpp" line="180"/>
-        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
-        <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/BackupCommand.cpp" line="194"/>
+        <location filename="../cli/BackupCommand.cpp" line="186"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: %2 個の設定を %3 回の要求で読出し、%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="201"/>
+        <location filename="../cli/BackupCommand.cpp" line="194"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 読出し失敗、%3 個中 %2 個の設定を読出し（%4 回の要求、%5 ms）</translation>
     </message>
@@ -1543,140 +1533,130 @@ Remedy: %5</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
         <source>Back up drives</source>
         <translation>ドライバのバックアップ</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Progress</source>
         <translation>進捗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="53"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>読み出せたドライバのみ保存します。その他は除外されます</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="55"/>
         <source>Stop after the drive being read</source>
         <translation>読出し中のドライバが終わったら停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="72"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="83"/>
         <source>Nothing was read: %1.</source>
         <translation>何も読み出していません：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="97"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="106"/>
         <source>Waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="101"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="110"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>%n 台のドライバの設定を読出し中…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="122"/>
         <source>Stopping after the drive being read…</source>
         <translation>読出し中のドライバが終わったら停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Not read (cancelled)</source>
         <translation>未読出し（キャンセル）</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="37"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>ドライバ %1: 識別できません。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
         <source>Not identified</source>
         <translation>識別不可</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="148"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n 個の設定を %1 ms で読出し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
-        <source>%1: cannot read %2</source>
-        <translation>%1: %2 を読み出せません</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
-        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
-        <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
         <source>Value not allowed</source>
         <translation>許可されていない値</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>Read failed</source>
         <translation>読出し失敗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="183"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未読出し: ドライバ %1。まだ何も保存していません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="196"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="189"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>読み出した %n 台のドライバを保存しますか？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="213"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>%n 台のドライバを %1 に保存しました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="226"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="219"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>除外（未読出し）: ドライバ %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="230"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="223"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -2487,6 +2467,19 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusRestore</name>
+    <message>
+        <location filename="../model/files/BusRestore.cpp" line="26"/>
+        <source>machine number %1 is not a drive on the bus</source>
+        <translation>局番 %1 はバス上のドライバではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BusRestore.cpp" line="97"/>
+        <source>not attempted</source>
+        <translation>未実行</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusScanner</name>
     <message>
         <location filename="../model/bus/BusScanner.cpp" line="223"/>
@@ -3149,90 +3142,85 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>A をプロファイルの工場出荷時設定と比較します。マニュアルに初期値の記載がない設定は一覧に表示しますが、差異としては数えません。</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="55"/>
-        <location filename="../cli/CompareCommand.cpp" line="90"/>
-        <location filename="../cli/CompareCommand.cpp" line="148"/>
+        <location filename="../cli/CompareCommand.cpp" line="69"/>
+        <location filename="../cli/CompareCommand.cpp" line="86"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="68"/>
+        <location filename="../cli/CompareCommand.cpp" line="63"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
         <location filename="../cli/CompareCommand.cpp" line="73"/>
-        <source>error: %1: cannot read %2</source>
-        <translation>エラー: %1: %2 を読み出せません</translation>
-    </message>
-    <message>
-        <location filename="../cli/CompareCommand.cpp" line="77"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="109"/>
+        <location filename="../cli/CompareCommand.cpp" line="105"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>エラー: %1 には複数のドライバ (%2) が含まれています。%1:ID の形式で 1 台を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="112"/>
+        <location filename="../cli/CompareCommand.cpp" line="108"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>エラー: %1 に局番 %2 のドライバは含まれていません。含まれているのは %3 です</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="128"/>
+        <location filename="../cli/CompareCommand.cpp" line="124"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>エラー: compare A B、または compare A --defaults（A、B: 局番、FILE または FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="142"/>
         <source>factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="169"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="174"/>
+        <location filename="../cli/CompareCommand.cpp" line="170"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="179"/>
-        <location filename="../cli/CompareCommand.cpp" line="180"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="176"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="179"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="185"/>
+        <location filename="../cli/CompareCommand.cpp" line="181"/>
         <source>no differences (%1 settings compared)</source>
         <translation>差異なし（比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="192"/>
+        <location filename="../cli/CompareCommand.cpp" line="188"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
@@ -4530,41 +4518,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="90"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="91"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="93"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="95"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 は設定ではなくコマンドです。コマンドは要求に応じて 1 つずつ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="248"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="259"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="271"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="249"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="260"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="282"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="283"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n 件の書込みに失敗しました: %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="285"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>書き込みましたが、届いたすべてのドライバでは確認できていません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="288"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -4633,6 +4621,29 @@ Configuration changes written but not stored are discarded.</source>
         <location filename="../model/session/DeviceRefusal.cpp" line="67"/>
         <source>error code %1</source>
         <translation>エラーコード %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveBatchReader</name>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="13"/>
+        <source>machine number %1: not read</source>
+        <translation>局番 %1: 読み出していません</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="22"/>
+        <source>%1: cannot read %2</source>
+        <translation>%1: %2 を読み出せません</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="24"/>
+        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
+        <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="84"/>
+        <source>machine number %1 is not a drive on the bus</source>
+        <translation>局番 %1 はバス上のドライバではありません</translation>
     </message>
 </context>
 <context>
@@ -5453,234 +5464,220 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>マスター品からレシピを作成します: バックアップファイルまたはバス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: マスター品のバックアップファイル。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: バス上のマスター品のドライバ。例: 1,2（接続オプションと併用）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="49"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 製品名。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: レシピのリビジョン。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="53"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 既存のレシピファイルを置き換えます。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="55"/>
         <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
         <translation>recipe create --drives: マスター品をレシピのステップどおりに一度運転し (モータが回転します)、測定値から保持ステップの判定値を決めます。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
         <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
         <translation>recipe create --measure: 測定値の前後に取る余裕。測定値に対する % (既定 25、最小でもパラメータのフルスケールの 5 %)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="60"/>
         <source>PERCENT</source>
         <translation>パーセント</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
         <source>recipe create --measure: run the motors.</source>
         <translation>recipe create --measure: モータの運転を確認します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="306"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="75"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
-        <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
-        <translation>エラー: 局番 %1: %2。機種が分かっていれば --variant %1=機種 で指定してください。何も書き込んでいない</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
-        <source>machine number %1: %2, %3 (%4)</source>
-        <translation>局番 %1: %2、%3（%4）</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="127"/>
-        <source>interrupted while reading machine number %1: nothing written</source>
-        <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="134"/>
-        <source>error: %1: cannot read %2</source>
-        <translation>エラー: %1: %2 を読み出せません</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="137"/>
-        <source>error: %1 holds a value its profile does not allow: %2</source>
-        <translation>エラー: %1 にプロファイルで許可されていない値があります: %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="140"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>nothing written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
         <source>%1: %2 settings read</source>
         <translation>%1: %2 個の設定を読出し</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
+        <source>interrupted while reading the golden unit: nothing written</source>
+        <translation>マスター品の読み出し中に中断: 何も書き込んでいません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <source>note: %1</source>
+        <translation>注: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
+        <source>give its variant with --variant %1=VARIANT</source>
+        <translation>--variant %1=機種 で機種を指定してください</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="130"/>
         <source>Would run the golden unit through the recipe&apos;s steps:</source>
         <translation>マスター品をレシピのステップどおりに運転します:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
         <translation>モータが回転します。運転するには --yes を付けてください。何も運転せず、何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="166"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="138"/>
         <source>measuring the golden unit (Ctrl-C stops every motor):</source>
         <translation>マスター品を測定中 (Ctrl-C で全モータ停止):</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="174"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="146"/>
         <source>drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="157"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="198"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="170"/>
         <source>WARNING: %1 is not confirmed stopped</source>
         <translation>警告: %1 の停止を確認できていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="179"/>
         <source>limits from the golden unit:</source>
         <translation>マスター品から決めた判定値:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="211"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="183"/>
         <source>  drive %1, step %2: %3</source>
         <translation>  ドライバ %1、ステップ %2: %3</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="234"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="206"/>
         <source>error: %1; usage: eol %2</source>
         <translation>エラー: %1。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="238"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="210"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>予期しない引数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="242"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="214"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE または --drives LIST のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="245"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="217"/>
         <source>--measure needs the golden unit on the bus: give --drives LIST</source>
         <translation>--measure にはバス上のマスター品が必要です: --drives で一覧を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="251"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="223"/>
         <source>--margin is for --measure</source>
         <translation>--margin は --measure と併用します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
         <source>--margin %1: give a percentage from 1 to 100</source>
         <translation>--margin %1: 1 から 100 のパーセントを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="259"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME で製品名を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV でレシピのリビジョンを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="264"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="236"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE で書き込むレシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="267"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>エラー: %1 は既に存在します。置き換えるには --force を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="243"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="289"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="301"/>
-        <source>Made from a golden unit; variants: %1.</source>
-        <translation>マスター品から作成。機種: %1。</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="313"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="278"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="331"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="296"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 を書き込みました: %2 リビジョン %3、%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="338"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="303"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>エラー: レシピが &quot;eol recipe check&quot; に合格しません: 修正してから &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
@@ -6540,93 +6537,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="180"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="177"/>
+        <location filename="../model/station/EolStation.cpp" line="177"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="179"/>
+        <location filename="../model/station/EolStation.cpp" line="179"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>接続できません（%1）。自動で再試行中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="188"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="192"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="197"/>
+        <location filename="../model/station/EolStation.cpp" line="197"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/station/EolStation.cpp" line="204"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="206"/>
+        <location filename="../model/station/EolStation.cpp" line="206"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/station/EolStation.cpp" line="208"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="218"/>
+        <location filename="../model/station/EolStation.cpp" line="218"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: シリアル番号 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="222"/>
-        <location filename="../model/eol/EolStation.cpp" line="270"/>
+        <location filename="../model/station/EolStation.cpp" line="222"/>
+        <location filename="../model/station/EolStation.cpp" line="270"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="226"/>
+        <location filename="../model/station/EolStation.cpp" line="226"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="230"/>
+        <location filename="../model/station/EolStation.cpp" line="230"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="252"/>
+        <location filename="../model/station/EolStation.cpp" line="252"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="272"/>
+        <location filename="../model/station/EolStation.cpp" line="272"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>ステーションのドライブが安全ではありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="306"/>
+        <location filename="../model/station/EolStation.cpp" line="306"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>シリアル %1 を再試験、%2 が許可:%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="342"/>
+        <location filename="../model/station/EolStation.cpp" line="342"/>
         <source>no unit was started yet</source>
         <translation>まだ試験を開始した製品がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="354"/>
+        <location filename="../model/station/EolStation.cpp" line="354"/>
         <source>cancelled before it started</source>
         <translation>開始前に取り消されました</translation>
     </message>
@@ -8204,7 +8201,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::InputFile</name>
     <message>
-        <location filename="../model/files/InputFile.cpp" line="13"/>
+        <location filename="../model/io/InputFile.cpp" line="13"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
@@ -9457,22 +9454,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::OutputFile</name>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="24"/>
+        <location filename="../model/io/OutputFile.cpp" line="24"/>
         <source>cannot write %1: it is a directory; name a file</source>
         <translation>%1 に書き込めません: ディレクトリです。ファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="26"/>
+        <location filename="../model/io/OutputFile.cpp" line="26"/>
         <source>cannot write %1: the folder %2 does not exist</source>
         <translation>%1 に書き込めません: フォルダ %2 が存在しません</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="35"/>
+        <location filename="../model/io/OutputFile.cpp" line="35"/>
         <source>cannot write %1: %2</source>
         <translation>%1 に書き込めません: %2</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="40"/>
+        <location filename="../model/io/OutputFile.cpp" line="40"/>
         <source>it is a directory; name a file</source>
         <translation>ディレクトリです。ファイルを指定してください</translation>
     </message>
@@ -10818,77 +10815,77 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="79"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="79"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1 はプロファイル翻訳の上限 %2 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="97"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="97"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>プロファイル翻訳の上限 %1 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="102"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="102"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で有効な JSON ではありません: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="106"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="106"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="109"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="109"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot; は &quot;%1&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="112"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="112"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot; は %1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="118"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="118"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot; は &quot;%1&quot; ですが、プロファイルは &quot;%2&quot; です</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="120"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot; は &quot;%1&quot; ですが、&quot;%2&quot; であるべきです</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="123"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="123"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot; はキー → テキストのオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="127"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="127"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot; は空でない文字列でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="144"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="144"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>プロファイルのキーが %1 個ありません: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="148"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="148"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>プロファイルにないキーが %1 個あります: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="156"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="156"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: パネルコードは英語と同じでなければなりません (%2)。実際: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="161"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="161"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: プレースホルダーは英語と同じでなければなりません (%2)。実際: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="168"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="168"/>
         <source>texts &quot;%1&quot;: the settings named ({setting:…}) must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 参照する設定 ({setting:…}) は英語と同じでなければなりません (%2)。実際は (%3)</translation>
     </message>
@@ -11030,52 +11027,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::Recipe</name>
     <message>
-        <location filename="../model/eol/Recipe.cpp" line="62"/>
-        <source>take communication priority</source>
-        <translation>通信優先にする</translation>
-    </message>
-    <message>
         <location filename="../model/eol/Recipe.cpp" line="64"/>
-        <source>select running data</source>
-        <translation>運転データを選択</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="66"/>
-        <source>set the speed command</source>
-        <translation>速度指令を設定</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="68"/>
-        <source>start</source>
-        <translation>運転開始</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="70"/>
-        <source>wait for speed</source>
-        <translation>速度到達を待機</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="72"/>
-        <source>hold and measure</source>
-        <translation>保持して測定</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="74"/>
-        <source>check for alarms and warnings</source>
-        <translation>アラームと警告をチェック</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="76"/>
-        <source>stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="78"/>
-        <source>read and compare</source>
-        <translation>読出しと比較</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="106"/>
         <source>position %1 (machine number %2)</source>
         <translation>位置 %1（局番 %2）</translation>
     </message>
@@ -11330,218 +11282,218 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="48"/>
         <source>Recipe editor</source>
         <translation>レシピエディタ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
         <source>Revision:</source>
         <translation>リビジョン:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Product:</source>
         <translation>製品:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
         <source>Description:</source>
         <translation>説明:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="72"/>
         <source>Position:</source>
         <translation>位置:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>New from drives on the bus…</source>
         <translation>バス上のドライバから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>New from backup file…</source>
         <translation>バックアップファイルから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Open…</source>
         <translation>開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="114"/>
         <source>Save as…</source>
         <translation>名前を付けて保存…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>マスター品のバス上のドライバまたはバックアップファイルからレシピを作成するか、既存のレシピを開いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
         <source>the recipe is empty</source>
         <translation>レシピが空です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>レシピはチェックに合格しました: 保存して実行できます。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 件の問題: 修正するまでレシピを保存できません。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>レシピがチェックに合格しません（%n 件の問題）。何も保存していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 は OpenTOP のレシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1 を開きましたが、そのままでは読み込めません (%2)。保存時にチェックし、再度署名します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="323"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1 から新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>局番 %1 はバス上の既知のドライバではありません。先にバスをスキャンしてください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>マスター品の設定を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="355"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="356"/>
+        <source>machine number %1 is not on the bus</source>
+        <translation>局番 %1 はバス上にありません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="369"/>
         <source>cancelled: no recipe was made</source>
         <translation>キャンセル: レシピは作成していません</translation>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="394"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="395"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="382"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>レシピ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
         <source>New recipe</source>
         <translation>新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
         <source>Product name:</source>
         <translation>製品名:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>マスター品のバックアップファイル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="418"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="405"/>
         <source>Backups (*.json)</source>
         <translation>バックアップ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="430"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>バス上にドライバがありません: 先に接続してスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="438"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
         <source>New recipe from drives</source>
         <translation>ドライバから新規レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="439"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="426"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>マスター品のドライバの局番（検出: %1）:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="449"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="436"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; は局番 (1–247) ではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="445"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>バス上のドライバから新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="456"/>
         <source>Save recipe</source>
         <translation>レシピを保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="476"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
         <source>Saved and signed: %1</source>
         <translation>保存・署名しました: %1</translation>
     </message>
@@ -11557,6 +11509,24 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <location filename="../model/eol/RecipeFile.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeFromDrives</name>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="66"/>
+        <source>machine number %1: %2; give its variant if you know it</source>
+        <translation>局番 %1: %2。機種が分かれば指定してください</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="74"/>
+        <source>machine number %1: %2, %3 (%4)</source>
+        <translation>局番 %1: %2、%3（%4）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="113"/>
+        <source>Made from a golden unit; variants: %1.</source>
+        <translation>マスター品から作成。機種: %1。</translation>
     </message>
 </context>
 <context>
@@ -11610,88 +11580,88 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="45"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="47"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON ファイルではありません: %2 バイト目で %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="49"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="51"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>OpenTOP のレシピファイルではありません: JSON がオブジェクトではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="72"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="74"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: レシピにドライバが指定されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="77"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="79"/>
         <source>%1: must be an object</source>
         <translation>%1: オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot; が &quot;%2&quot; ではなく &quot;%1&quot; です）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="98"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot;: &quot;%1&quot; がありません）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; は 1 以上の整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="105"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>新しい OpenTOP で書き込まれています（レシピフォーマットバージョン %1）。このバージョンが読み込めるのはレシピフォーマットバージョン %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="111"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>レシピにチェックサムがありません（&quot;checksum&quot;: &quot;sha256:…&quot;）。OpenTOP で書き込まれていないか、書込み後に変更されています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="117"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>書込み後にレシピが変更されています（チェックサム不一致）。変更を承認するには OpenTOP で開いて保存してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot; は局番 1–247 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="211"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="136"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="213"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="179"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="181"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot; は数値またはテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="195"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="197"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot; は &quot;%3&quot; ではなく &quot;csv&quot; または &quot;operator&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なステップタイプ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="222"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="226"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot; は運転データ番号（例: 2）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="235"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="239"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot; は &quot;cw&quot; または &quot;ccw&quot; でなければなりません</translation>
     </message>
@@ -12063,303 +12033,308 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RecipeStepKinds</name>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="17"/>
+        <source>take communication priority</source>
+        <translation>通信優先にする</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="20"/>
+        <source>select running data</source>
+        <translation>運転データを選択</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="21"/>
+        <source>Running data:</source>
+        <translation>運転データ：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="24"/>
+        <source>set the speed command</source>
+        <translation>速度指令を設定</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="25"/>
+        <source>Speed command:</source>
+        <translation>速度指令:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <source>Unit:</source>
+        <translation>単位：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <source>the speed command&apos;s unit</source>
+        <translation>速度指令の単位</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
+        <source>start</source>
+        <translation>運転開始</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="30"/>
+        <source>Direction:</source>
+        <translation>回転方向：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
+        <source>wait for speed</source>
+        <translation>速度到達を待機</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="34"/>
+        <source>Target speed:</source>
+        <translation>目標速度：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="35"/>
+        <source>empty: the drive&apos;s own target speed</source>
+        <translation>空欄：ドライバ自身の目標速度</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
+        <source>Tolerance (±):</source>
+        <translation>許容差（±）：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <source>the speed&apos;s unit</source>
+        <translation>速度の単位</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <source>Within:</source>
+        <translation>制限時間：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="41"/>
+        <source>hold and measure</source>
+        <translation>保持して測定</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
+        <source>Duration:</source>
+        <translation>保持時間：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
+        <source>Deceleration time:</source>
+        <translation>減速時間：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
+        <source>empty: the drive&apos;s setting</source>
+        <translation>空欄：ドライバの設定値</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
+        <source>Margin:</source>
+        <translation>余裕時間：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <source>check for alarms and warnings</source>
+        <translation>アラームと警告をチェック</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="53"/>
+        <source>read and compare</source>
+        <translation>読出しと比較</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
+        <source>Parameter:</source>
+        <translation>パラメータ：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <source>Lower limit:</source>
+        <translation>下限：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <source>empty: none</source>
+        <translation>空欄：なし</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <source>Upper limit:</source>
+        <translation>上限：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <source>the value&apos;s unit</source>
+        <translation>値の単位</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="58"/>
+        <source>Or equals:</source>
+        <translation>または一致：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
+        <source>the expected text, instead of limits</source>
+        <translation>規格値の代わりに期待する文字列</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>Step</source>
         <translation>ステップ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>What it does</source>
         <translation>内容</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="52"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="55"/>
         <source>Add step</source>
         <translation>ステップを追加</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="57"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="60"/>
         <source>Remove</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="58"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
         <source>Move up</source>
         <translation>上へ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="59"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
         <source>Move down</source>
         <translation>下へ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="90"/>
-        <source>Take communication priority</source>
-        <translation>通信優先にする</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="91"/>
-        <source>Select running data</source>
-        <translation>運転データを選択</translation>
-    </message>
-    <message>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
-        <source>Set the speed command</source>
-        <translation>速度指令を設定</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
-        <source>Start</source>
-        <translation>起動</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="94"/>
-        <source>Wait for the speed</source>
-        <translation>速度到達を待つ</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="95"/>
-        <source>Hold and measure</source>
-        <translation>保持して測定</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="96"/>
-        <source>Stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="97"/>
-        <source>No alarm or warning</source>
-        <translation>アラーム・警告なし</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="98"/>
-        <source>Read and compare</source>
-        <translation>読み出して比較</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="100"/>
         <source>(unknown step: %1)</source>
         <translation>（不明なステップ：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="105"/>
         <source>running data SPno%1</source>
         <translation>運転データ SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="107"/>
         <source>speed command %1 %2</source>
         <translation>速度指令 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="115"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
         <source>%1 ± %2 %3 within %4 s</source>
         <translation>%4 s 以内に %1 ± %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="117"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="113"/>
         <source>the drive&apos;s target speed</source>
         <translation>ドライバの目標速度</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="116"/>
         <source>%1 s, %n limit(s)</source>
         <translation>
             <numerusform>%1 s、規格値 %n 件</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
         <source>stopped within %1 s + %2 s</source>
         <translation>%1 s + %2 s 以内に停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
         <source>stopped within the deceleration time + %1 s</source>
         <translation>減速時間 + %1 s 以内に停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
         <source>no value chosen to read yet</source>
         <translation>読み出す値がまだ選ばれていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
         <source>%1 is &quot;%2&quot;</source>
         <translation>%1 が「%2」</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="130"/>
         <source>%1 between %2 and %3 %4</source>
         <translation>%1 が %2～%3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="135"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="136"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
         <source>any</source>
         <translation>制限なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="258"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>No step selected</source>
         <translation>ステップが選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="259"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>ステップを追加するか、編集するステップを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="265"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="261"/>
         <source>Step %1: %2</source>
         <translation>ステップ %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
-        <source>Running data:</source>
-        <translation>運転データ：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="276"/>
-        <source>Speed command:</source>
-        <translation>速度指令：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
-        <source>Unit:</source>
-        <translation>単位：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
-        <source>the speed command&apos;s unit</source>
-        <translation>速度指令の単位</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
-        <source>Direction:</source>
-        <translation>回転方向：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
-        <source>Target speed:</source>
-        <translation>目標速度：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
-        <source>empty: the drive&apos;s own target speed</source>
-        <translation>空欄：ドライバ自身の目標速度</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
-        <source>Tolerance (±):</source>
-        <translation>許容差（±）：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
-        <source>the speed&apos;s unit</source>
-        <translation>速度の単位</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <source>Within:</source>
-        <translation>制限時間：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
-        <source>Duration:</source>
-        <translation>保持時間：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
-        <source>Deceleration time:</source>
-        <translation>減速時間：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="302"/>
-        <source>empty: the drive&apos;s setting</source>
-        <translation>空欄：ドライバの設定値</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
-        <source>Margin:</source>
-        <translation>余裕時間：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
-        <source>Lower limit:</source>
-        <translation>下限：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
-        <source>empty: none</source>
-        <translation>空欄：なし</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
-        <source>Upper limit:</source>
-        <translation>上限：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
-        <source>the value&apos;s unit</source>
-        <translation>値の単位</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="311"/>
-        <source>Or equals:</source>
-        <translation>または一致：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
-        <source>the expected text, instead of limits</source>
-        <translation>規格値の代わりに期待する文字列</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
         <source>This step has no settings.</source>
         <translation>このステップに設定項目はありません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="361"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="359"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="363"/>
         <source>(unknown: %1)</source>
         <translation>（不明：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="369"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="373"/>
         <source>Parameter:</source>
         <translation>パラメータ：</translation>
     </message>
@@ -12561,98 +12536,93 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>計画を書き込みます（指定しない場合、restore は表示のみ）。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="54"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1: ドライバの設定を読み出せませんでした。比較も書込みもしていません</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="86"/>
-        <location filename="../cli/RestoreCommand.cpp" line="124"/>
+        <location filename="../cli/RestoreCommand.cpp" line="60"/>
+        <location filename="../cli/RestoreCommand.cpp" line="98"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>file value</source>
         <translation>ファイルの値</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>device value</source>
         <translation>デバイスの値</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="106"/>
+        <location filename="../cli/RestoreCommand.cpp" line="80"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 個を書込み・照合、%2 個は変更なし、%3 個は失敗、%4 個は未実行</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="112"/>
+        <location filename="../cli/RestoreCommand.cpp" line="86"/>
         <source>, %1 not confirmed</source>
         <translation>、%1 個は未確認</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="114"/>
+        <location filename="../cli/RestoreCommand.cpp" line="88"/>
         <source>; %1 of %2 store commands written</source>
         <translation>。保存コマンド %2 個中 %1 個を書込み</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="149"/>
+        <location filename="../cli/RestoreCommand.cpp" line="123"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>エラー: バックアップファイルを 1 つ指定してください: restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="137"/>
         <source>error: --ids: %1</source>
         <translation>エラー: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="168"/>
+        <location filename="../cli/RestoreCommand.cpp" line="142"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>エラー: %1 に局番 %2 のドライバは含まれていません。含まれているのは %3 です</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="191"/>
+        <location filename="../cli/RestoreCommand.cpp" line="163"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="181"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="228"/>
-        <source>not attempted</source>
-        <translation>未実行</translation>
-    </message>
-    <message>
-        <location filename="../cli/RestoreCommand.cpp" line="231"/>
+        <location filename="../cli/RestoreCommand.cpp" line="199"/>
         <source>%1: not attempted</source>
         <translation>%1: 未実行</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="253"/>
+        <location filename="../cli/RestoreCommand.cpp" line="228"/>
         <source>dry run: nothing written</source>
         <translation>ドライラン: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="254"/>
+        <location filename="../cli/RestoreCommand.cpp" line="229"/>
         <source>nothing written; add --yes to write</source>
         <translation>何も書き込んでいません。書き込むには --yes を付けてください</translation>
     </message>
@@ -12660,206 +12630,201 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Preview</source>
         <translation>プレビュー(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Write to drives…</source>
         <translation>ドライバに書込み(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>&amp;Cancel</source>
         <translation>キャンセル(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
         <source>&amp;Save report…</source>
         <translation>レポートを保存(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>Restore from a backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>No file chosen</source>
         <translation>ファイル未選択</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
         <source>&amp;Choose file…</source>
         <translation>ファイルを選択(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="47"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="48"/>
         <source>File:</source>
         <translation>ファイル:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>ドライバを読み出して変更内容を表示します。何も書き込みません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>プレビューした変更を書き込み、それぞれ読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>実行中の書込みの照合後に停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>レポートをテキストで保存します（名前が .csv で終わる場合は CSV）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="99"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="112"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="117"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="105"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="170"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>拒否。何も書き込みません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="110"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="123"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>ファイル内のドライバ %n 台。復元する内容を選択し、「プレビュー」を押してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="137"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="145"/>
         <source>Refused, nothing written:</source>
         <translation>拒否。何も書き込んでいません:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="139"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="147"/>
         <source>Drive %1 from %2: %3</source>
         <translation>ドライバ %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="169"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="177"/>
         <source>Choose a backup file first.</source>
         <translation>先にバックアップファイルを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="193"/>
         <source>Nothing was read or written: %1.</source>
         <translation>何も読み書きしていません：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="220"/>
-        <source>not attempted</source>
-        <translation>未実行</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
         <source>Reading drive %1…</source>
         <translation>ドライバ %1 を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
         <source>Writing drive %1…</source>
         <translation>ドライバ %1 に書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="93"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>ドライバ %1: %2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="260"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="228"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>実行中の書込みの照合後に停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="275"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="361"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="243"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="324"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="329"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="278"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="246"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>書き込む設定 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="253"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="288"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="256"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>まだ何も書き込んでいません。適用するには「ドライバに書込み」を押してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="289"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
         <source>Nothing written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="305"/>
         <source>Restore from backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="364"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="332"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>ドライバ %1 に %n 個の設定を書き込み、それぞれ読み戻して照合しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>Write to drives</source>
         <translation>ドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>&amp;Write</source>
         <translation>書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="374"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="342"/>
         <source>Save restore report</source>
         <translation>復元レポートを保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>テキスト (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="348"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -12867,124 +12832,124 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="70"/>
+        <location filename="../model/files/RestorePlan.cpp" line="71"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>ファイルには %1 ドライバ (%2) が含まれていますが、局番 %3 は %4 ドライバです。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="77"/>
+        <location filename="../model/files/RestorePlan.cpp" line="78"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>ファイルは %1 (%2) のものですが、局番 %3 は %4 (%5) です。許容値が異なるため、何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="84"/>
+        <location filename="../model/files/RestorePlan.cpp" line="85"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>ドライバが機種を通知しません: すべての値が全機種に適合する必要があります（--variant で機種を指定すると、その機種の範囲を使用します）</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="153"/>
+        <location filename="../model/files/RestorePlan.cpp" line="143"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 値を正確に書き込めません</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="173"/>
+        <location filename="../model/files/RestorePlan.cpp" line="163"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>ファイルの %n 個の値はこのドライバに書き込めません。何も書き込んでいません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="245"/>
         <source>%1 sent after the writes, so that the settings written survive power-off</source>
         <translation>書込み後に %1 を送信し、書き込んだ設定を電源オフ後も保持します</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="258"/>
+        <location filename="../model/files/RestorePlan.cpp" line="248"/>
         <source>%1 sent: settings written to this drive earlier (by an interrupted restore, a page or the command line) are not stored yet</source>
         <translation>%1 を送信：以前にこのドライバへ書き込んだ設定 (中断した復元、ページまたはコマンドライン) がまだ保存されていません</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="262"/>
+        <location filename="../model/files/RestorePlan.cpp" line="252"/>
         <source>%1 not sent: nothing it stores is written. What a drive has stored cannot be read back: if it loses settings at power-off, switch it off and on and restore again</source>
         <translation>%1 は送信していません：これが保存する設定は書き込んでいません。ドライバに保存された内容は読み戻せません。電源オフで設定が失われる場合は、電源を入れ直してから再度復元してください</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="286"/>
         <source>keep</source>
         <translation>維持</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="298"/>
+        <location filename="../model/files/RestorePlan.cpp" line="288"/>
         <source>write</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="300"/>
+        <location filename="../model/files/RestorePlan.cpp" line="290"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="301"/>
         <source>unchanged</source>
         <translation>変更なし</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="314"/>
+        <location filename="../model/files/RestorePlan.cpp" line="304"/>
         <source>written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="317"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="319"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>not attempted</source>
         <translation>未実行</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="321"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。復元を再実行して読み戻してください</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="346"/>
+        <location filename="../model/files/RestorePlan.cpp" line="336"/>
         <source>planned</source>
         <translation>計画済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="348"/>
+        <location filename="../model/files/RestorePlan.cpp" line="338"/>
         <source>restored</source>
         <translation>復元済み</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="350"/>
+        <location filename="../model/files/RestorePlan.cpp" line="340"/>
         <source>refused</source>
         <translation>拒否</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="352"/>
+        <location filename="../model/files/RestorePlan.cpp" line="342"/>
         <source>communication failure</source>
         <translation>通信失敗</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="354"/>
+        <location filename="../model/files/RestorePlan.cpp" line="344"/>
         <source>verification mismatch</source>
         <translation>照合不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="356"/>
+        <location filename="../model/files/RestorePlan.cpp" line="346"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
@@ -13762,12 +13727,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="76"/>
+        <location filename="../model/profile/RunningData.cpp" line="76"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1 は %2 r/min から %3 s で減速します: マニュアルでは、高速（約 %5 r/min 以上）から減速する場合、減速時間を %4 s より長くするよう指示されています。</translation>
     </message>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="144"/>
+        <location filename="../model/profile/RunningData.cpp" line="144"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1 で高速からの減速が短すぎます（%2 r/min を %3 s）: マニュアルでは、高速（約 %5 r/min 以上）から減速する場合、減速時間を %4 s より長くするよう指示されています。</translation>
     </message>
@@ -14270,152 +14235,152 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="87"/>
+        <location filename="../cli/SetCommand.cpp" line="88"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>パラメータを名前で書き込み、検証・読み戻し・照合します</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="97"/>
+        <location filename="../cli/SetCommand.cpp" line="98"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>アドレスでレジスタに書き込みます: ADDR=VALUE（複数指定可。--fc 16 では VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="98"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="100"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 書込みのファンクションコード: 6（既定）または 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="100"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="108"/>
+        <location filename="../cli/SetCommand.cpp" line="109"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>エラー: 使い方: set ID NAME=VALUE...（例: set 1 spno2.accel=2.5）、または set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="120"/>
+        <location filename="../cli/SetCommand.cpp" line="121"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>エラー: &quot;%1&quot; は NAME=VALUE ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="127"/>
+        <location filename="../cli/SetCommand.cpp" line="128"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>エラー: %1 が 2 回指定されています（%2=%3 と %4）。各設定は 1 回だけ指定してください。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="76"/>
-        <location filename="../cli/SetCommand.cpp" line="138"/>
-        <location filename="../cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="77"/>
+        <location filename="../cli/SetCommand.cpp" line="139"/>
+        <location filename="../cli/SetCommand.cpp" line="279"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="149"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="151"/>
+        <location filename="../cli/SetCommand.cpp" line="152"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="153"/>
+        <location filename="../cli/SetCommand.cpp" line="154"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 は %2 コマンドです。送信するには --yes を付けてください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="208"/>
+        <location filename="../cli/SetCommand.cpp" line="209"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>エラー: 値をチェックするための %1 を読み出せません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="192"/>
-        <location filename="../cli/SetCommand.cpp" line="255"/>
-        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="262"/>
+        <location filename="../cli/SetCommand.cpp" line="273"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="94"/>
+        <location filename="../cli/SetCommand.cpp" line="95"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>モータの運転、リセット、消去、初期化、保存を行うコマンドと、シリアル設定ロックの設定を確定します。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="243"/>
+        <location filename="../cli/SetCommand.cpp" line="250"/>
         <source>Add --yes to set it.</source>
         <translation>設定するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="78"/>
-        <location filename="../cli/SetCommand.cpp" line="273"/>
+        <location filename="../cli/SetCommand.cpp" line="79"/>
+        <location filename="../cli/SetCommand.cpp" line="280"/>
         <source>nothing was written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="301"/>
+        <location filename="../cli/SetCommand.cpp" line="308"/>
         <source>not written (interrupted)</source>
         <translation>未書込み（中断）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="314"/>
+        <location filename="../cli/SetCommand.cpp" line="321"/>
         <source>next: %1</source>
         <translation>次に: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="316"/>
+        <location filename="../cli/SetCommand.cpp" line="323"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>次に: opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（工場出荷時の通信設定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="366"/>
+        <location filename="../cli/SetCommand.cpp" line="373"/>
         <source>written, verified</source>
         <translation>書込み済み、照合済み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <location filename="../cli/SetCommand.cpp" line="375"/>
         <source>written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="369"/>
+        <location filename="../cli/SetCommand.cpp" line="376"/>
         <source>written (command, not readable)</source>
         <translation>書込み済み（コマンド、読出し不可）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="371"/>
+        <location filename="../cli/SetCommand.cpp" line="378"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。&quot;get&quot; で読み戻してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="382"/>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="396"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注: ドライバは次回の電源投入から %1 を使用します: ドライバの電源を入れ直し、新しい設定（--baud、--parity）で接続してください</translation>
     </message>

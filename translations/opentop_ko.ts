@@ -4,28 +4,28 @@
 <context>
     <name>Freshness</name>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="29"/>
-        <location filename="../model/monitor/Freshness.cpp" line="31"/>
+        <location filename="../model/session/Freshness.cpp" line="29"/>
+        <location filename="../model/session/Freshness.cpp" line="31"/>
         <source>%1 s old</source>
         <translation>%1초 전</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="33"/>
+        <location filename="../model/session/Freshness.cpp" line="33"/>
         <source>%1 min old</source>
         <translation>%1분 전</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="34"/>
+        <location filename="../model/session/Freshness.cpp" line="34"/>
         <source>%1 h old</source>
         <translation>%1시간 전</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="40"/>
+        <location filename="../model/session/Freshness.cpp" line="40"/>
         <source>never read</source>
         <translation>읽은 적 없음</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="41"/>
+        <location filename="../model/session/Freshness.cpp" line="41"/>
         <source>last answer %1 (%2)</source>
         <translation>마지막 응답 %1 (%2)</translation>
     </message>
@@ -445,7 +445,7 @@
         <translation>%1: &quot;label&quot;과 &quot;meaning&quot;은 비어 있으면 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="57"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="57"/>
         <source> and %1 more</source>
         <translation> 외 %1개</translation>
     </message>
@@ -1422,105 +1422,95 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="34"/>
+        <location filename="../cli/BackupCommand.cpp" line="36"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>드라이버의 모든 설정을 백업 파일로 저장합니다(모두 읽은 경우에만 저장)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="40"/>
+        <location filename="../cli/BackupCommand.cpp" line="42"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>저장할 백업 파일(원자적으로 교체).</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="41"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="45"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>연결이 알고 있는 모든 드라이버(시뮬레이션 버스) 또는 스캔으로 찾은 모든 드라이버.</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="51"/>
+        <location filename="../cli/BackupCommand.cpp" line="53"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>오류: 국번을 지정하거나 --all을 주십시오: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="60"/>
-        <location filename="../cli/BackupCommand.cpp" line="226"/>
-        <location filename="../cli/BackupCommand.cpp" line="232"/>
+        <location filename="../cli/BackupCommand.cpp" line="62"/>
+        <location filename="../cli/BackupCommand.cpp" line="243"/>
+        <location filename="../cli/BackupCommand.cpp" line="249"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="69"/>
+        <location filename="../cli/BackupCommand.cpp" line="71"/>
         <source>scanning the bus for drives…</source>
         <translation>버스에서 드라이버를 스캔하는 중…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="84"/>
+        <location filename="../cli/BackupCommand.cpp" line="86"/>
         <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
         <translation>경고: 국번 %1이(가) 응답했지만 식별에 실패했습니다: 백업하지 않았습니다. 이 국번을 지정해 다시 시도하십시오(backup %1 -o FILE).</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="105"/>
+        <location filename="../cli/BackupCommand.cpp" line="107"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>오류: %2을(를) 읽는 중 포트 %1이(가) 끊어졌습니다(%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="108"/>
-        <location filename="../cli/BackupCommand.cpp" line="228"/>
+        <location filename="../cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="245"/>
         <source>nothing written to %1</source>
         <translation>%1에 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="116"/>
+        <location filename="../cli/BackupCommand.cpp" line="118"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>오류: 저장할 파일을 지정하십시오: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="120"/>
+        <location filename="../cli/BackupCommand.cpp" line="122"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="132"/>
+        <location filename="../cli/BackupCommand.cpp" line="134"/>
         <source>interrupted: nothing written</source>
         <translation>중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="136"/>
+        <location filename="../cli/BackupCommand.cpp" line="138"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>오류: %1에서 응답하는 드라이버가 없습니다. 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="155"/>
+        <location filename="../cli/BackupCommand.cpp" line="164"/>
         <source>machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="170"/>
+        <location filename="../cli/BackupCommand.cpp" line="224"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="178"/>
-        <source>%1: cannot read %2</source>
-        <translation>%1: %2을(를) 읽을 수 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/BackupCommand.cpp" line="180"/>
-        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
-        <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/BackupCommand.cpp" line="194"/>
+        <location filename="../cli/BackupCommand.cpp" line="186"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: 설정 %2개를 요청 %3회로 읽음, %4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="201"/>
+        <location filename="../cli/BackupCommand.cpp" line="194"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 읽기 실패, 설정 %3개 중 %2개 읽음(요청 %4회, %5 ms)</translation>
     </message>
@@ -1543,140 +1533,130 @@ Remedy: %5</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
         <source>Back up drives</source>
         <translation>드라이버 백업</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Progress</source>
         <translation>진행</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="53"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>읽은 드라이버만 저장합니다. 나머지는 제외됩니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="55"/>
         <source>Stop after the drive being read</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="72"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="83"/>
         <source>Nothing was read: %1.</source>
         <translation>아무것도 읽지 않았습니다: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="97"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="106"/>
         <source>Waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="101"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="110"/>
         <source>%v of %m drives</source>
         <translation>드라이버 %m대 중 %v대</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>드라이버 %n대의 설정을 읽는 중…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="122"/>
         <source>Stopping after the drive being read…</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Not read (cancelled)</source>
         <translation>읽지 않음(취소됨)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="37"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>드라이버 %1: 식별되지 않아 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
         <source>Not identified</source>
         <translation>식별 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="148"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>설정 %n개 읽음, %1 ms</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
-        <source>%1: cannot read %2</source>
-        <translation>%1: %2을(를) 읽을 수 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
-        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
-        <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
         <source>Value not allowed</source>
         <translation>허용되지 않는 값</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>Read failed</source>
         <translation>읽기 실패</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="183"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>읽지 못한 드라이버: %1. 아직 아무것도 저장하지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="196"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="189"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>읽은 드라이버 %n대를 저장하시겠습니까?</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="213"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>드라이버 %n대를 %1에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="226"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="219"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>제외됨(읽지 못함): 드라이버 %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="230"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="223"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -2487,6 +2467,19 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusRestore</name>
+    <message>
+        <location filename="../model/files/BusRestore.cpp" line="26"/>
+        <source>machine number %1 is not a drive on the bus</source>
+        <translation>국번 %1은(는) 버스에 있는 드라이버가 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BusRestore.cpp" line="97"/>
+        <source>not attempted</source>
+        <translation>시도 안 함</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusScanner</name>
     <message>
         <location filename="../model/bus/BusScanner.cpp" line="223"/>
@@ -3149,90 +3142,85 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>A를 프로파일의 공장 출하값과 비교합니다. 매뉴얼에 기본값이 없는 설정은 목록에 표시하지만 차이로 세지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="55"/>
-        <location filename="../cli/CompareCommand.cpp" line="90"/>
-        <location filename="../cli/CompareCommand.cpp" line="148"/>
+        <location filename="../cli/CompareCommand.cpp" line="69"/>
+        <location filename="../cli/CompareCommand.cpp" line="86"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="68"/>
+        <location filename="../cli/CompareCommand.cpp" line="63"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
         <location filename="../cli/CompareCommand.cpp" line="73"/>
-        <source>error: %1: cannot read %2</source>
-        <translation>오류: %1: %2을(를) 읽을 수 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/CompareCommand.cpp" line="77"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="109"/>
+        <location filename="../cli/CompareCommand.cpp" line="105"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>오류: %1에 드라이버가 여러 대 있습니다(%2): %1:ID 형식으로 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="112"/>
+        <location filename="../cli/CompareCommand.cpp" line="108"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>오류: %1에 국번 %2인 드라이버가 없습니다. 포함된 드라이버: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="128"/>
+        <location filename="../cli/CompareCommand.cpp" line="124"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>오류: compare A B 또는 compare A --defaults (A, B: 국번, FILE 또는 FILE:ID)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="142"/>
         <source>factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="169"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="174"/>
+        <location filename="../cli/CompareCommand.cpp" line="170"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="179"/>
-        <location filename="../cli/CompareCommand.cpp" line="180"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="176"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="179"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="185"/>
+        <location filename="../cli/CompareCommand.cpp" line="181"/>
         <source>no differences (%1 settings compared)</source>
         <translation>차이 없음(설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="192"/>
+        <location filename="../cli/CompareCommand.cpp" line="188"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
@@ -4530,41 +4518,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="90"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="91"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="93"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="95"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1은(는) 설정이 아니라 명령입니다. 명령은 요청할 때 하나씩 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="248"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="259"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="271"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="249"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="260"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="282"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="283"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>쓰기 %n건 실패: %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="285"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>쓰기는 했지만, 받은 모든 드라이버에서 확인되지는 않았습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="288"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -4633,6 +4621,29 @@ Configuration changes written but not stored are discarded.</source>
         <location filename="../model/session/DeviceRefusal.cpp" line="67"/>
         <source>error code %1</source>
         <translation>오류 코드 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveBatchReader</name>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="13"/>
+        <source>machine number %1: not read</source>
+        <translation>국번 %1: 읽지 않음</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="22"/>
+        <source>%1: cannot read %2</source>
+        <translation>%1: %2을(를) 읽을 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="24"/>
+        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
+        <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="84"/>
+        <source>machine number %1 is not a drive on the bus</source>
+        <translation>국번 %1은(는) 버스에 있는 드라이버가 아닙니다</translation>
     </message>
 </context>
 <context>
@@ -5453,234 +5464,220 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>기준 제품(골든 유닛)으로 레시피를 만듭니다: 백업 파일 또는 버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: 기준 제품의 백업 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: 버스에 있는 기준 제품의 드라이버, 예: 1,2 (연결 옵션과 함께).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="49"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 제품 이름.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: 레시피 개정.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="53"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 기존 레시피 파일을 교체합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="55"/>
         <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
         <translation>recipe create --drives: 기준 제품을 레시피 단계대로 한 번 운전하고(모터가 회전합니다) 측정값으로 유지 단계의 한계값을 정합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
         <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
         <translation>recipe create --measure: 측정값 주위의 여유, 측정값의 %로 지정 (기본 25, 최소 해당 파라미터 풀스케일의 5 %).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="60"/>
         <source>PERCENT</source>
         <translation>퍼센트</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
         <source>recipe create --measure: run the motors.</source>
         <translation>recipe create --measure: 모터 운전을 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="306"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="75"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
-        <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
-        <translation>오류: 국번 %1: %2. 기종을 알면 --variant %1=기종 으로 지정하십시오. 아무것도 쓰지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
-        <source>machine number %1: %2, %3 (%4)</source>
-        <translation>국번 %1: %2, %3 (%4)</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="127"/>
-        <source>interrupted while reading machine number %1: nothing written</source>
-        <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="134"/>
-        <source>error: %1: cannot read %2</source>
-        <translation>오류: %1: %2을(를) 읽을 수 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="137"/>
-        <source>error: %1 holds a value its profile does not allow: %2</source>
-        <translation>오류: %1에 프로파일이 허용하지 않는 값이 있습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="140"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>nothing written</source>
         <translation>아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
         <source>%1: %2 settings read</source>
         <translation>%1: 설정 %2개 읽음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
+        <source>interrupted while reading the golden unit: nothing written</source>
+        <translation>기준 제품을 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <source>note: %1</source>
+        <translation>참고: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
+        <source>give its variant with --variant %1=VARIANT</source>
+        <translation>--variant %1=기종 으로 기종을 지정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="130"/>
         <source>Would run the golden unit through the recipe&apos;s steps:</source>
         <translation>기준 제품을 레시피 단계대로 운전하려고 합니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
         <translation>모터가 회전합니다. 운전하려면 --yes를 붙이십시오. 아무것도 운전하지 않았고 아무것도 저장하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="166"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="138"/>
         <source>measuring the golden unit (Ctrl-C stops every motor):</source>
         <translation>기준 제품 측정 중 (Ctrl-C로 모든 모터 정지):</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="174"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="146"/>
         <source>drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="157"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="198"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="170"/>
         <source>WARNING: %1 is not confirmed stopped</source>
         <translation>경고: %1의 정지가 확인되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="179"/>
         <source>limits from the golden unit:</source>
         <translation>기준 제품으로 정한 한계값:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="211"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="183"/>
         <source>  drive %1, step %2: %3</source>
         <translation>  드라이버 %1, 단계 %2: %3</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="234"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="206"/>
         <source>error: %1; usage: eol %2</source>
         <translation>오류: %1; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="238"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="210"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>예상치 못한 인수 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="242"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="214"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE 또는 --drives LIST 중 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="245"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="217"/>
         <source>--measure needs the golden unit on the bus: give --drives LIST</source>
         <translation>--measure에는 버스에 연결된 기준 제품이 필요합니다: --drives 목록을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="251"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="223"/>
         <source>--margin is for --measure</source>
         <translation>--margin은 --measure와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
         <source>--margin %1: give a percentage from 1 to 100</source>
         <translation>--margin %1: 1에서 100 사이의 퍼센트를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="259"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME으로 제품 이름을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV로 레시피 개정을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="264"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="236"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE로 저장할 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="267"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>오류: %1이(가) 이미 있습니다. 교체하려면 --force를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="243"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="289"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="301"/>
-        <source>Made from a golden unit; variants: %1.</source>
-        <translation>기준 제품으로 만듦. 기종: %1.</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="313"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="278"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="331"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="296"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 저장함: %2 개정 %3, %4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="338"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="303"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>오류: 레시피가 &quot;eol recipe check&quot;를 통과하지 못합니다. 수정한 뒤 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
@@ -6540,93 +6537,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="180"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="177"/>
+        <location filename="../model/station/EolStation.cpp" line="177"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="179"/>
+        <location filename="../model/station/EolStation.cpp" line="179"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="188"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="192"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="197"/>
+        <location filename="../model/station/EolStation.cpp" line="197"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/station/EolStation.cpp" line="204"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="206"/>
+        <location filename="../model/station/EolStation.cpp" line="206"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/station/EolStation.cpp" line="208"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="218"/>
+        <location filename="../model/station/EolStation.cpp" line="218"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: 시리얼 번호 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="222"/>
-        <location filename="../model/eol/EolStation.cpp" line="270"/>
+        <location filename="../model/station/EolStation.cpp" line="222"/>
+        <location filename="../model/station/EolStation.cpp" line="270"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="226"/>
+        <location filename="../model/station/EolStation.cpp" line="226"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="230"/>
+        <location filename="../model/station/EolStation.cpp" line="230"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="252"/>
+        <location filename="../model/station/EolStation.cpp" line="252"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="272"/>
+        <location filename="../model/station/EolStation.cpp" line="272"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="306"/>
+        <location filename="../model/station/EolStation.cpp" line="306"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>시리얼 %1 재시험, %2 허가: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="342"/>
+        <location filename="../model/station/EolStation.cpp" line="342"/>
         <source>no unit was started yet</source>
         <translation>아직 검사를 시작한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="354"/>
+        <location filename="../model/station/EolStation.cpp" line="354"/>
         <source>cancelled before it started</source>
         <translation>시작 전에 취소됨</translation>
     </message>
@@ -8204,7 +8201,7 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::InputFile</name>
     <message>
-        <location filename="../model/files/InputFile.cpp" line="13"/>
+        <location filename="../model/io/InputFile.cpp" line="13"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
@@ -9457,22 +9454,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::OutputFile</name>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="24"/>
+        <location filename="../model/io/OutputFile.cpp" line="24"/>
         <source>cannot write %1: it is a directory; name a file</source>
         <translation>%1에 쓸 수 없습니다: 디렉터리입니다. 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="26"/>
+        <location filename="../model/io/OutputFile.cpp" line="26"/>
         <source>cannot write %1: the folder %2 does not exist</source>
         <translation>%1에 쓸 수 없습니다: 폴더 %2이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="35"/>
+        <location filename="../model/io/OutputFile.cpp" line="35"/>
         <source>cannot write %1: %2</source>
         <translation>%1에 쓸 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="40"/>
+        <location filename="../model/io/OutputFile.cpp" line="40"/>
         <source>it is a directory; name a file</source>
         <translation>디렉터리입니다. 파일을 지정하십시오</translation>
     </message>
@@ -10818,77 +10815,77 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="79"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="79"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1이(가) 프로파일 번역의 최대 크기인 %2 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="97"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="97"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>프로파일 번역의 최대 크기인 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="102"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="102"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="106"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="106"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="109"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="109"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot;은(는) &quot;%1&quot;이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="112"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="112"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot;은(는) %1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="118"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="118"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot;가 &quot;%1&quot;이지만 프로파일은 &quot;%2&quot;입니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="120"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot;가 &quot;%1&quot;이지만 &quot;%2&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="123"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="123"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot;는 키 → 텍스트 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="127"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="127"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot;은(는) 비어 있지 않은 문자열이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="144"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="144"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>프로파일의 키 %1개가 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="148"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="148"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>프로파일에 없는 키 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="156"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="156"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 패널 코드는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="161"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="161"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 자리 표시자는 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="168"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="168"/>
         <source>texts &quot;%1&quot;: the settings named ({setting:…}) must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;: 가리키는 설정({setting:…})은 영어와 같아야 합니다(%2). 실제: (%3)</translation>
     </message>
@@ -11030,52 +11027,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::Recipe</name>
     <message>
-        <location filename="../model/eol/Recipe.cpp" line="62"/>
-        <source>take communication priority</source>
-        <translation>통신 우선으로 전환</translation>
-    </message>
-    <message>
         <location filename="../model/eol/Recipe.cpp" line="64"/>
-        <source>select running data</source>
-        <translation>운전 데이터 선택</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="66"/>
-        <source>set the speed command</source>
-        <translation>속도 명령 설정</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="68"/>
-        <source>start</source>
-        <translation>기동</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="70"/>
-        <source>wait for speed</source>
-        <translation>속도 대기</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="72"/>
-        <source>hold and measure</source>
-        <translation>유지 및 측정</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="74"/>
-        <source>check for alarms and warnings</source>
-        <translation>알람·경고 확인</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="76"/>
-        <source>stop</source>
-        <translation>정지</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="78"/>
-        <source>read and compare</source>
-        <translation>읽기 및 비교</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="106"/>
         <source>position %1 (machine number %2)</source>
         <translation>위치 %1 (국번 %2)</translation>
     </message>
@@ -11330,218 +11282,218 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="48"/>
         <source>Recipe editor</source>
         <translation>레시피 편집기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
         <source>Revision:</source>
         <translation>개정:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Product:</source>
         <translation>제품:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
         <source>Description:</source>
         <translation>설명:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="72"/>
         <source>Position:</source>
         <translation>위치:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>New from drives on the bus…</source>
         <translation>버스의 드라이버로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>New from backup file…</source>
         <translation>백업 파일로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Open…</source>
         <translation>열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
         <source>Save</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="114"/>
         <source>Save as…</source>
         <translation>다른 이름으로 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>버스에 있는 기준 제품의 드라이버나 그 백업 파일로 레시피를 만들거나, 레시피를 여십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
         <source>the recipe is empty</source>
         <translation>레시피가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>레시피가 검사를 통과했습니다: 저장하고 실행할 수 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>문제 %n건: 수정할 때까지 레시피를 저장할 수 없습니다.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>레시피가 검사를 통과하지 못했습니다(문제 %n건). 아무것도 저장하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1은(는) OpenTOP 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1</source>
         <translation>%1 열림</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1을(를) 열었지만 그대로는 불러올 수 없습니다(%2). 저장하면 검사 후 다시 서명합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="323"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>%1에서 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>국번 %1은(는) 버스에 알려진 드라이버가 아닙니다. 먼저 버스를 스캔하십시오</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>기준 제품의 설정을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="355"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="356"/>
+        <source>machine number %1 is not on the bus</source>
+        <translation>국번 %1이(가) 버스에 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="369"/>
         <source>cancelled: no recipe was made</source>
         <translation>취소됨: 레시피를 만들지 않았습니다</translation>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="394"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="395"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="382"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>레시피 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
         <source>New recipe</source>
         <translation>새 레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
         <source>Product name:</source>
         <translation>제품 이름:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>기준 제품의 백업 파일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="418"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="405"/>
         <source>Backups (*.json)</source>
         <translation>백업 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="430"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>버스에 드라이버가 없습니다: 먼저 연결하고 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="438"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
         <source>New recipe from drives</source>
         <translation>드라이버로 새 레시피 만들기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="439"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="426"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>기준 제품 드라이버의 국번 (발견: %1):</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="449"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="436"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot;은(는) 국번(1–247)이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="445"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>버스의 드라이버로 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="456"/>
         <source>Save recipe</source>
         <translation>레시피 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="476"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
         <source>Saved and signed: %1</source>
         <translation>저장 및 서명 완료: %1</translation>
     </message>
@@ -11557,6 +11509,24 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <location filename="../model/eol/RecipeFile.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeFromDrives</name>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="66"/>
+        <source>machine number %1: %2; give its variant if you know it</source>
+        <translation>국번 %1: %2; 기종을 알면 지정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="74"/>
+        <source>machine number %1: %2, %3 (%4)</source>
+        <translation>국번 %1: %2, %3 (%4)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="113"/>
+        <source>Made from a golden unit; variants: %1.</source>
+        <translation>기준 제품으로 만듦. 기종: %1.</translation>
     </message>
 </context>
 <context>
@@ -11610,88 +11580,88 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="45"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="47"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON 파일이 아닙니다: 바이트 %2에서 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="49"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="51"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>OpenTOP 레시피 파일이 아닙니다: JSON이 객체가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="72"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="74"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: 레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="77"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="79"/>
         <source>%1: must be an object</source>
         <translation>%1: 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;이 &quot;%2&quot;이(가) 아니라 &quot;%1&quot;입니다)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="98"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;: &quot;%1&quot; 없음)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot;은 1 이상의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="105"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>더 새로운 OpenTOP에서 저장한 파일입니다(레시피 형식 버전 %1). 이 버전은 레시피 형식 버전 %2을(를) 읽습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="111"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>레시피에 체크섬이 없습니다(&quot;checksum&quot;: &quot;sha256:…&quot;). OpenTOP에서 저장한 파일이 아니거나 저장 후 변경되었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="117"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>레시피가 저장된 후 변경되었습니다(체크섬 불일치). 변경을 승인하려면 OpenTOP에서 열어 저장하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot;는 국번 1–247이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="211"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="136"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="213"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="179"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="181"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot;는 숫자 또는 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="195"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="197"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot;는 &quot;%3&quot;이(가) 아니라 &quot;csv&quot; 또는 &quot;operator&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 단계 유형 &quot;%2&quot;; 알려진 유형: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="222"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="226"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot;는 2와 같은 운전 데이터 번호여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="235"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="239"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot;은 &quot;cw&quot; 또는 &quot;ccw&quot;여야 합니다</translation>
     </message>
@@ -12063,303 +12033,308 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RecipeStepKinds</name>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="17"/>
+        <source>take communication priority</source>
+        <translation>통신 우선으로 전환</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="20"/>
+        <source>select running data</source>
+        <translation>운전 데이터 선택</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="21"/>
+        <source>Running data:</source>
+        <translation>운전 데이터:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="24"/>
+        <source>set the speed command</source>
+        <translation>속도 명령 설정</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="25"/>
+        <source>Speed command:</source>
+        <translation>속도 명령:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <source>Unit:</source>
+        <translation>단위:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <source>the speed command&apos;s unit</source>
+        <translation>속도 지령의 단위</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
+        <source>start</source>
+        <translation>기동</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="30"/>
+        <source>Direction:</source>
+        <translation>회전 방향:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
+        <source>wait for speed</source>
+        <translation>속도 대기</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="34"/>
+        <source>Target speed:</source>
+        <translation>목표 속도:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="35"/>
+        <source>empty: the drive&apos;s own target speed</source>
+        <translation>비워 두면: 드라이버 자체의 목표 속도</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
+        <source>Tolerance (±):</source>
+        <translation>허용 오차(±):</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <source>the speed&apos;s unit</source>
+        <translation>속도의 단위</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <source>Within:</source>
+        <translation>제한 시간:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="41"/>
+        <source>hold and measure</source>
+        <translation>유지 및 측정</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
+        <source>Duration:</source>
+        <translation>유지 시간:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
+        <source>stop</source>
+        <translation>정지</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
+        <source>Deceleration time:</source>
+        <translation>감속 시간:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
+        <source>empty: the drive&apos;s setting</source>
+        <translation>비워 두면: 드라이버의 설정값</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
+        <source>Margin:</source>
+        <translation>여유 시간:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <source>check for alarms and warnings</source>
+        <translation>알람·경고 확인</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="53"/>
+        <source>read and compare</source>
+        <translation>읽기 및 비교</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
+        <source>Parameter:</source>
+        <translation>파라미터:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <source>Lower limit:</source>
+        <translation>하한:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <source>empty: none</source>
+        <translation>비워 두면: 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <source>Upper limit:</source>
+        <translation>상한:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <source>the value&apos;s unit</source>
+        <translation>값의 단위</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="58"/>
+        <source>Or equals:</source>
+        <translation>또는 일치:</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
+        <source>the expected text, instead of limits</source>
+        <translation>한계값 대신 기대하는 텍스트</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>Step</source>
         <translation>단계</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>What it does</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="52"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="55"/>
         <source>Add step</source>
         <translation>단계 추가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="57"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="60"/>
         <source>Remove</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="58"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
         <source>Move up</source>
         <translation>위로</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="59"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
         <source>Move down</source>
         <translation>아래로</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="90"/>
-        <source>Take communication priority</source>
-        <translation>통신 우선으로 전환</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="91"/>
-        <source>Select running data</source>
-        <translation>운전 데이터 선택</translation>
-    </message>
-    <message>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
-        <source>Set the speed command</source>
-        <translation>속도 지령 설정</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
-        <source>Start</source>
-        <translation>기동</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="94"/>
-        <source>Wait for the speed</source>
-        <translation>속도 도달 대기</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="95"/>
-        <source>Hold and measure</source>
-        <translation>유지하며 측정</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="96"/>
-        <source>Stop</source>
-        <translation>정지</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="97"/>
-        <source>No alarm or warning</source>
-        <translation>알람·경고 없음</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="98"/>
-        <source>Read and compare</source>
-        <translation>읽어서 비교</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="100"/>
         <source>(unknown step: %1)</source>
         <translation>(알 수 없는 단계: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="105"/>
         <source>running data SPno%1</source>
         <translation>운전 데이터 SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="107"/>
         <source>speed command %1 %2</source>
         <translation>속도 지령 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="115"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
         <source>%1 ± %2 %3 within %4 s</source>
         <translation>%4 s 이내에 %1 ± %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="117"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="113"/>
         <source>the drive&apos;s target speed</source>
         <translation>드라이버의 목표 속도</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="116"/>
         <source>%1 s, %n limit(s)</source>
         <translation>
             <numerusform>%1 s, 한계값 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
         <source>stopped within %1 s + %2 s</source>
         <translation>%1 s + %2 s 이내 정지</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
         <source>stopped within the deceleration time + %1 s</source>
         <translation>감속 시간 + %1 s 이내 정지</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
         <source>no value chosen to read yet</source>
         <translation>읽을 값이 아직 선택되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
         <source>%1 is &quot;%2&quot;</source>
         <translation>%1 = &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="130"/>
         <source>%1 between %2 and %3 %4</source>
         <translation>%1: %2~%3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="135"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="136"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
         <source>any</source>
         <translation>제한 없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="258"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>No step selected</source>
         <translation>선택된 단계 없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="259"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>단계를 추가하거나 편집할 단계를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="265"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="261"/>
         <source>Step %1: %2</source>
         <translation>단계 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
-        <source>Running data:</source>
-        <translation>운전 데이터:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="276"/>
-        <source>Speed command:</source>
-        <translation>속도 지령:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
-        <source>Unit:</source>
-        <translation>단위:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
-        <source>the speed command&apos;s unit</source>
-        <translation>속도 지령의 단위</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
-        <source>Direction:</source>
-        <translation>회전 방향:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
-        <source>Target speed:</source>
-        <translation>목표 속도:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
-        <source>empty: the drive&apos;s own target speed</source>
-        <translation>비워 두면: 드라이버 자체의 목표 속도</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
-        <source>Tolerance (±):</source>
-        <translation>허용 오차(±):</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
-        <source>the speed&apos;s unit</source>
-        <translation>속도의 단위</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <source>Within:</source>
-        <translation>제한 시간:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
-        <source>Duration:</source>
-        <translation>유지 시간:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
-        <source>Deceleration time:</source>
-        <translation>감속 시간:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="302"/>
-        <source>empty: the drive&apos;s setting</source>
-        <translation>비워 두면: 드라이버의 설정값</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
-        <source>Margin:</source>
-        <translation>여유 시간:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
-        <source>Lower limit:</source>
-        <translation>하한:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
-        <source>empty: none</source>
-        <translation>비워 두면: 없음</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
-        <source>Upper limit:</source>
-        <translation>상한:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
-        <source>the value&apos;s unit</source>
-        <translation>값의 단위</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="311"/>
-        <source>Or equals:</source>
-        <translation>또는 일치:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
-        <source>the expected text, instead of limits</source>
-        <translation>한계값 대신 기대하는 텍스트</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
         <source>This step has no settings.</source>
         <translation>이 단계에는 설정 항목이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="361"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="359"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="363"/>
         <source>(unknown: %1)</source>
         <translation>(알 수 없음: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="369"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="373"/>
         <source>Parameter:</source>
         <translation>파라미터:</translation>
     </message>
@@ -12561,98 +12536,93 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>계획을 씁니다(없으면 restore는 계획만 표시).</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="54"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1: 드라이버 설정을 읽지 못했습니다. 비교하지 않았고 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="86"/>
-        <location filename="../cli/RestoreCommand.cpp" line="124"/>
+        <location filename="../cli/RestoreCommand.cpp" line="60"/>
+        <location filename="../cli/RestoreCommand.cpp" line="98"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>file value</source>
         <translation>파일 값</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>device value</source>
         <translation>장치 값</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>action</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="106"/>
+        <location filename="../cli/RestoreCommand.cpp" line="80"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>쓰기 및 검증 %1, 변경 없음 %2, 실패 %3, 시도 안 함 %4</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="112"/>
+        <location filename="../cli/RestoreCommand.cpp" line="86"/>
         <source>, %1 not confirmed</source>
         <translation>, 확인 안 됨 %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="114"/>
+        <location filename="../cli/RestoreCommand.cpp" line="88"/>
         <source>; %1 of %2 store commands written</source>
         <translation>; 저장 명령 %2개 중 %1개 씀</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="149"/>
+        <location filename="../cli/RestoreCommand.cpp" line="123"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>오류: 백업 파일 하나를 지정하십시오: restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="137"/>
         <source>error: --ids: %1</source>
         <translation>오류: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="168"/>
+        <location filename="../cli/RestoreCommand.cpp" line="142"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>오류: %1에 국번 %2인 드라이버가 없습니다. 포함된 드라이버: %3</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="191"/>
+        <location filename="../cli/RestoreCommand.cpp" line="163"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="181"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="228"/>
-        <source>not attempted</source>
-        <translation>시도 안 함</translation>
-    </message>
-    <message>
-        <location filename="../cli/RestoreCommand.cpp" line="231"/>
+        <location filename="../cli/RestoreCommand.cpp" line="199"/>
         <source>%1: not attempted</source>
         <translation>%1: 시도 안 함</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="253"/>
+        <location filename="../cli/RestoreCommand.cpp" line="228"/>
         <source>dry run: nothing written</source>
         <translation>시험 실행(dry run): 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="254"/>
+        <location filename="../cli/RestoreCommand.cpp" line="229"/>
         <source>nothing written; add --yes to write</source>
         <translation>아무것도 쓰지 않았습니다. 쓰려면 --yes를 추가하십시오</translation>
     </message>
@@ -12660,206 +12630,201 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Preview</source>
         <translation>미리 보기(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Write to drives…</source>
         <translation>드라이버에 쓰기(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>&amp;Cancel</source>
         <translation>취소(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
         <source>&amp;Save report…</source>
         <translation>보고서 저장(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>Restore from a backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>No file chosen</source>
         <translation>선택한 파일 없음</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
         <source>&amp;Choose file…</source>
         <translation>파일 선택(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="47"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="48"/>
         <source>File:</source>
         <translation>파일:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>드라이버를 읽고 바뀔 내용을 표시합니다. 아무것도 쓰지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>미리 본 변경 사항을 쓰고, 각각 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>보고서를 텍스트로 저장합니다. 이름이 .csv로 끝나면 CSV로 저장합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="99"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="112"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="117"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="105"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="170"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>거부됨, 아무것도 쓰지 않습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="110"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="123"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>파일에 드라이버 %n대가 있습니다. 복원할 항목을 선택한 뒤 미리 보기를 누르십시오.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="137"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="145"/>
         <source>Refused, nothing written:</source>
         <translation>거부됨, 아무것도 쓰지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="139"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="147"/>
         <source>Drive %1 from %2: %3</source>
         <translation>드라이버 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="169"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="177"/>
         <source>Choose a backup file first.</source>
         <translation>먼저 백업 파일을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="193"/>
         <source>Nothing was read or written: %1.</source>
         <translation>아무것도 읽거나 쓰지 않았습니다: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="220"/>
-        <source>not attempted</source>
-        <translation>시도 안 함</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
         <source>Reading drive %1…</source>
         <translation>드라이버 %1 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
         <source>Writing drive %1…</source>
         <translation>드라이버 %1 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="93"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>드라이버 %1: %2 (%m 중 %v)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="260"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="228"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="275"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="361"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="243"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="324"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="329"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="278"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="246"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>쓸 설정 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="253"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="288"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="256"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>아직 아무것도 쓰지 않았습니다. 적용하려면 드라이버에 쓰기를 누르십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="289"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
         <source>Nothing written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="305"/>
         <source>Restore from backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="364"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="332"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>설정 %n개를 드라이버 %1에 쓰고 각각 다시 읽어 검증하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>Write to drives</source>
         <translation>드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>&amp;Write</source>
         <translation>쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="374"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="342"/>
         <source>Save restore report</source>
         <translation>복원 보고서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>텍스트 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="348"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -12867,124 +12832,124 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="70"/>
+        <location filename="../model/files/RestorePlan.cpp" line="71"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>파일에는 %1 드라이버(%2)가 있지만 국번 %3은(는) %4 드라이버입니다. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="77"/>
+        <location filename="../model/files/RestorePlan.cpp" line="78"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>파일은 %1(%2)의 것이지만 국번 %3은(는) %4(%5)입니다. 허용 값이 다르므로 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="84"/>
+        <location filename="../model/files/RestorePlan.cpp" line="85"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>드라이버가 기종을 알려주지 않습니다: 모든 값이 모든 기종에 맞아야 합니다(해당 기종의 범위를 쓰려면 --variant로 지정)</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="153"/>
+        <location filename="../model/files/RestorePlan.cpp" line="143"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1: 값을 정확하게 쓸 수 없습니다</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="173"/>
+        <location filename="../model/files/RestorePlan.cpp" line="163"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>파일의 값 %n개는 이 드라이버에 쓸 수 없습니다. 아무것도 쓰지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="245"/>
         <source>%1 sent after the writes, so that the settings written survive power-off</source>
         <translation>쓰기 후 %1을(를) 보내 쓴 설정이 전원을 꺼도 유지되게 합니다</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="258"/>
+        <location filename="../model/files/RestorePlan.cpp" line="248"/>
         <source>%1 sent: settings written to this drive earlier (by an interrupted restore, a page or the command line) are not stored yet</source>
         <translation>%1 전송: 이전에 이 드라이버에 쓴 설정(중단된 복원, 페이지 또는 명령줄)이 아직 저장되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="262"/>
+        <location filename="../model/files/RestorePlan.cpp" line="252"/>
         <source>%1 not sent: nothing it stores is written. What a drive has stored cannot be read back: if it loses settings at power-off, switch it off and on and restore again</source>
         <translation>%1 미전송: 이 명령이 저장하는 설정은 쓰지 않았습니다. 드라이버에 저장된 내용은 다시 읽을 수 없습니다. 전원을 끄면 설정이 없어진다면 전원을 껐다 켠 뒤 다시 복원하십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="286"/>
         <source>keep</source>
         <translation>유지</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="298"/>
+        <location filename="../model/files/RestorePlan.cpp" line="288"/>
         <source>write</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="300"/>
+        <location filename="../model/files/RestorePlan.cpp" line="290"/>
         <source>store</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="301"/>
         <source>unchanged</source>
         <translation>변경 없음</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="314"/>
+        <location filename="../model/files/RestorePlan.cpp" line="304"/>
         <source>written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="317"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>failed: %1</source>
         <translation>실패: %1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="319"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>not attempted</source>
         <translation>시도 안 함</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="321"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. 복원을 다시 실행하여 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="346"/>
+        <location filename="../model/files/RestorePlan.cpp" line="336"/>
         <source>planned</source>
         <translation>계획됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="348"/>
+        <location filename="../model/files/RestorePlan.cpp" line="338"/>
         <source>restored</source>
         <translation>복원됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="350"/>
+        <location filename="../model/files/RestorePlan.cpp" line="340"/>
         <source>refused</source>
         <translation>거부됨</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="352"/>
+        <location filename="../model/files/RestorePlan.cpp" line="342"/>
         <source>communication failure</source>
         <translation>통신 실패</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="354"/>
+        <location filename="../model/files/RestorePlan.cpp" line="344"/>
         <source>verification mismatch</source>
         <translation>검증 불일치</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="356"/>
+        <location filename="../model/files/RestorePlan.cpp" line="346"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
@@ -13762,12 +13727,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="76"/>
+        <location filename="../model/profile/RunningData.cpp" line="76"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1은(는) %2 r/min에서 %3 s 동안 감속합니다: 매뉴얼은 고속(약 %5 r/min 이상)에서 감속할 때 감속 시간을 %4 s 이상으로 하도록 요구합니다.</translation>
     </message>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="144"/>
+        <location filename="../model/profile/RunningData.cpp" line="144"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1의 고속 감속 시간이 짧습니다(%2 r/min에서 %3 s): 매뉴얼은 고속(약 %5 r/min 이상)에서 감속할 때 감속 시간을 %4 s 이상으로 하도록 요구합니다.</translation>
     </message>
@@ -14270,152 +14235,152 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="87"/>
+        <location filename="../cli/SetCommand.cpp" line="88"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>파라미터를 이름으로 쓰고, 검사하고, 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="97"/>
+        <location filename="../cli/SetCommand.cpp" line="98"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>주소로 레지스터를 씁니다: ADDR=VALUE (반복 가능; --fc 16이면 VALUE,VALUE...).</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="98"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="100"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 쓰기의 기능 코드: 6(기본값) 또는 16.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="100"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="108"/>
+        <location filename="../cli/SetCommand.cpp" line="109"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>오류: 사용법: set ID NAME=VALUE... (예: set 1 spno2.accel=2.5) 또는 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="120"/>
+        <location filename="../cli/SetCommand.cpp" line="121"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>오류: &quot;%1&quot;은(는) NAME=VALUE 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="127"/>
+        <location filename="../cli/SetCommand.cpp" line="128"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>오류: %1이(가) 두 번 지정되었습니다(%2=%3 및 %4). 설정은 한 번씩만 지정하십시오. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="76"/>
-        <location filename="../cli/SetCommand.cpp" line="138"/>
-        <location filename="../cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="77"/>
+        <location filename="../cli/SetCommand.cpp" line="139"/>
+        <location filename="../cli/SetCommand.cpp" line="279"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="149"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="151"/>
+        <location filename="../cli/SetCommand.cpp" line="152"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="153"/>
+        <location filename="../cli/SetCommand.cpp" line="154"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1은(는) %2 명령입니다. 보내려면 --yes를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="208"/>
+        <location filename="../cli/SetCommand.cpp" line="209"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>오류: 값을 검사하기 위해 %1을(를) 읽을 수 없습니다. 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="192"/>
-        <location filename="../cli/SetCommand.cpp" line="255"/>
-        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="262"/>
+        <location filename="../cli/SetCommand.cpp" line="273"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="94"/>
+        <location filename="../cli/SetCommand.cpp" line="95"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>모터를 움직이거나 리셋, 삭제, 초기화, 저장하는 명령과 시리얼 설정 잠금의 설정을 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="243"/>
+        <location filename="../cli/SetCommand.cpp" line="250"/>
         <source>Add --yes to set it.</source>
         <translation>설정하려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="78"/>
-        <location filename="../cli/SetCommand.cpp" line="273"/>
+        <location filename="../cli/SetCommand.cpp" line="79"/>
+        <location filename="../cli/SetCommand.cpp" line="280"/>
         <source>nothing was written</source>
         <translation>아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="301"/>
+        <location filename="../cli/SetCommand.cpp" line="308"/>
         <source>not written (interrupted)</source>
         <translation>쓰지 않음(중단됨)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="314"/>
+        <location filename="../cli/SetCommand.cpp" line="321"/>
         <source>next: %1</source>
         <translation>다음: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="316"/>
+        <location filename="../cli/SetCommand.cpp" line="323"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>다음: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (공장 출하 통신 설정)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="366"/>
+        <location filename="../cli/SetCommand.cpp" line="373"/>
         <source>written, verified</source>
         <translation>쓰기 완료, 검증됨</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <location filename="../cli/SetCommand.cpp" line="375"/>
         <source>written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="369"/>
+        <location filename="../cli/SetCommand.cpp" line="376"/>
         <source>written (command, not readable)</source>
         <translation>쓰기 완료(명령, 읽기 불가)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="371"/>
+        <location filename="../cli/SetCommand.cpp" line="378"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. &quot;get&quot;으로 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="382"/>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="396"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>참고: 드라이버는 다음 전원 투입부터 %1을(를) 사용합니다: 드라이버 전원을 껐다 켠 뒤 새 설정(--baud, --parity)으로 연결하십시오</translation>
     </message>

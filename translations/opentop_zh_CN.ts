@@ -4,28 +4,28 @@
 <context>
     <name>Freshness</name>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="29"/>
-        <location filename="../model/monitor/Freshness.cpp" line="31"/>
+        <location filename="../model/session/Freshness.cpp" line="29"/>
+        <location filename="../model/session/Freshness.cpp" line="31"/>
         <source>%1 s old</source>
         <translation>%1 s 前</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="33"/>
+        <location filename="../model/session/Freshness.cpp" line="33"/>
         <source>%1 min old</source>
         <translation>%1 min 前</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="34"/>
+        <location filename="../model/session/Freshness.cpp" line="34"/>
         <source>%1 h old</source>
         <translation>%1 h 前</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="40"/>
+        <location filename="../model/session/Freshness.cpp" line="40"/>
         <source>never read</source>
         <translation>从未读取</translation>
     </message>
     <message>
-        <location filename="../model/monitor/Freshness.cpp" line="41"/>
+        <location filename="../model/session/Freshness.cpp" line="41"/>
         <source>last answer %1 (%2)</source>
         <translation>最后应答 %1（%2）</translation>
     </message>
@@ -445,7 +445,7 @@
         <translation>%1：&quot;label&quot; 和 &quot;meaning&quot; 不能为空</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="57"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="57"/>
         <source> and %1 more</source>
         <translation> 及另外 %1 个</translation>
     </message>
@@ -1422,105 +1422,95 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="34"/>
+        <location filename="../cli/BackupCommand.cpp" line="36"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>将驱动器的全部设定保存到备份文件（仅在全部读取成功后写入）</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="40"/>
+        <location filename="../cli/BackupCommand.cpp" line="42"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>要写入的备份文件（原子替换）。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="41"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="45"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>连接已知的所有驱动器（模拟总线），或扫描找到的所有驱动器。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="51"/>
+        <location filename="../cli/BackupCommand.cpp" line="53"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>错误：请指定站号，或使用 --all：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="60"/>
-        <location filename="../cli/BackupCommand.cpp" line="226"/>
-        <location filename="../cli/BackupCommand.cpp" line="232"/>
+        <location filename="../cli/BackupCommand.cpp" line="62"/>
+        <location filename="../cli/BackupCommand.cpp" line="243"/>
+        <location filename="../cli/BackupCommand.cpp" line="249"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="69"/>
+        <location filename="../cli/BackupCommand.cpp" line="71"/>
         <source>scanning the bus for drives…</source>
         <translation>正在扫描总线上的驱动器…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="84"/>
+        <location filename="../cli/BackupCommand.cpp" line="86"/>
         <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
         <translation>警告：站号 %1 有应答，但识别失败：未备份它；请指定这个站号再试一次（backup %1 -o FILE）。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="105"/>
+        <location filename="../cli/BackupCommand.cpp" line="107"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>错误：读取 %2 时端口 %1 丢失（%3）</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="108"/>
-        <location filename="../cli/BackupCommand.cpp" line="228"/>
+        <location filename="../cli/BackupCommand.cpp" line="110"/>
+        <location filename="../cli/BackupCommand.cpp" line="245"/>
         <source>nothing written to %1</source>
         <translation>未写入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="116"/>
+        <location filename="../cli/BackupCommand.cpp" line="118"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>错误：请指定要写入的文件：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="120"/>
+        <location filename="../cli/BackupCommand.cpp" line="122"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="132"/>
+        <location filename="../cli/BackupCommand.cpp" line="134"/>
         <source>interrupted: nothing written</source>
         <translation>已中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="136"/>
+        <location filename="../cli/BackupCommand.cpp" line="138"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>错误：%1 上没有驱动器应答；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="155"/>
+        <location filename="../cli/BackupCommand.cpp" line="164"/>
         <source>machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="170"/>
+        <location filename="../cli/BackupCommand.cpp" line="224"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>读取站号 %1 时中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="178"/>
-        <source>%1: cannot read %2</source>
-        <translation>%1：无法读取 %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/BackupCommand.cpp" line="180"/>
-        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
-        <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
-    </message>
-    <message>
-        <location filename="../cli/BackupCommand.cpp" line="194"/>
+        <location filename="../cli/BackupCommand.cpp" line="186"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1：%3 次请求读取 %2 项设定，%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="201"/>
+        <location filename="../cli/BackupCommand.cpp" line="194"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1：读取失败，已读取 %3 项设定中的 %2 项（%4 次请求，%5 ms）</translation>
     </message>
@@ -1543,140 +1533,130 @@ Remedy: %5</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="33"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
         <source>Back up drives</source>
         <translation>备份驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="35"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="46"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="42"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="53"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>仅保存已读取的驱动器；其余的不保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="44"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="55"/>
         <source>Stop after the drive being read</source>
         <translation>读完当前驱动器后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="72"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="83"/>
         <source>Nothing was read: %1.</source>
         <translation>未读取任何数据：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="97"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="106"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="101"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="110"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驱动器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在读取 %n 台驱动器的设定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="122"/>
         <source>Stopping after the drive being read…</source>
         <translation>读完当前驱动器后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="129"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
         <source>Not read (cancelled)</source>
         <translation>未读取（已取消）</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="37"/>
         <source>drive %1: not identified, nothing read</source>
         <translation>驱动器 %1：未识别，未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="140"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
         <source>Not identified</source>
         <translation>未识别</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="148"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%1 ms 内读取了 %n 项设定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
-        <source>%1: cannot read %2</source>
-        <translation>%1：无法读取 %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
-        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
-        <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
         <source>Value not allowed</source>
         <translation>值不允许</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="170"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>Read failed</source>
         <translation>读取失败</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="183"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未读取：驱动器 %1。尚未保存任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="196"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="189"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>保存已读取的 %n 台驱动器？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="213"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 台驱动器保存到 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="226"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="219"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>未保存（未读取）：驱动器 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="230"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="223"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -2487,6 +2467,19 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusRestore</name>
+    <message>
+        <location filename="../model/files/BusRestore.cpp" line="26"/>
+        <source>machine number %1 is not a drive on the bus</source>
+        <translation>站号 %1 不是总线上的驱动器</translation>
+    </message>
+    <message>
+        <location filename="../model/files/BusRestore.cpp" line="97"/>
+        <source>not attempted</source>
+        <translation>未尝试</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusScanner</name>
     <message>
         <location filename="../model/bus/BusScanner.cpp" line="223"/>
@@ -3149,90 +3142,85 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>将 A 与设备描述中的出厂默认值比较；手册未给出默认值的设定会列出，但不计为差异。</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="55"/>
-        <location filename="../cli/CompareCommand.cpp" line="90"/>
-        <location filename="../cli/CompareCommand.cpp" line="148"/>
+        <location filename="../cli/CompareCommand.cpp" line="69"/>
+        <location filename="../cli/CompareCommand.cpp" line="86"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="68"/>
+        <location filename="../cli/CompareCommand.cpp" line="63"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
         <location filename="../cli/CompareCommand.cpp" line="73"/>
-        <source>error: %1: cannot read %2</source>
-        <translation>错误：%1：无法读取 %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/CompareCommand.cpp" line="77"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="109"/>
+        <location filename="../cli/CompareCommand.cpp" line="105"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>错误：%1 包含多台驱动器（%2）：请用 %1:ID 指定其中一台</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="112"/>
+        <location filename="../cli/CompareCommand.cpp" line="108"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>错误：%1 中没有站号为 %2 的驱动器；其中有 %3</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="128"/>
+        <location filename="../cli/CompareCommand.cpp" line="124"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>错误：compare A B 或 compare A --defaults（A、B：站号、FILE 或 FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="146"/>
+        <location filename="../cli/CompareCommand.cpp" line="142"/>
         <source>factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="169"/>
         <source>A: %1 (%2)</source>
         <translation>A：%1（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="174"/>
+        <location filename="../cli/CompareCommand.cpp" line="170"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="177"/>
+        <location filename="../cli/CompareCommand.cpp" line="173"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="179"/>
-        <location filename="../cli/CompareCommand.cpp" line="180"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
+        <location filename="../cli/CompareCommand.cpp" line="176"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="183"/>
+        <location filename="../cli/CompareCommand.cpp" line="179"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="185"/>
+        <location filename="../cli/CompareCommand.cpp" line="181"/>
         <source>no differences (%1 settings compared)</source>
         <translation>无差异（共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="192"/>
+        <location filename="../cli/CompareCommand.cpp" line="188"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
@@ -4530,41 +4518,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="90"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="91"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="93"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="95"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 是命令，不是设定；命令仅在请求时逐条发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="248"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="259"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="271"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="249"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="260"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="282"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="283"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n 个写入失败：%1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="285"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>已写入，但未能在所有收到的驱动器上确认：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="288"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -4633,6 +4621,29 @@ Configuration changes written but not stored are discarded.</source>
         <location filename="../model/session/DeviceRefusal.cpp" line="67"/>
         <source>error code %1</source>
         <translation>错误代码 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::DriveBatchReader</name>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="13"/>
+        <source>machine number %1: not read</source>
+        <translation>站号 %1：未读取</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="22"/>
+        <source>%1: cannot read %2</source>
+        <translation>%1：无法读取 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="24"/>
+        <source>%1 holds a value its profile does not allow, so the backup could not be restored: %2</source>
+        <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/files/DriveBatchReader.cpp" line="84"/>
+        <source>machine number %1 is not a drive on the bus</source>
+        <translation>站号 %1 不是总线上的驱动器</translation>
     </message>
 </context>
 <context>
@@ -5453,234 +5464,220 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>从标准样机生成配方：备份文件或总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：标准样机的备份文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：标准样机在总线上的驱动器，例如 1,2（配合连接选项）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="49"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：产品名称。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版本。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="53"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：替换已有的配方文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="55"/>
         <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
         <translation>recipe create --drives：让标准样机按配方步骤运行一次（电机会转动），并以测量值确定保持步骤的限值。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
         <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
         <translation>recipe create --measure：测量值两侧的裕量，以测量值的 % 表示（默认 25；至少为该参数满量程的 5 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="60"/>
         <source>PERCENT</source>
         <translation>百分比</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
         <source>recipe create --measure: run the motors.</source>
         <translation>recipe create --measure：确认让电机运转。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="200"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="306"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="75"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
-        <source>error: machine number %1: %2; give its variant with --variant %1=VARIANT if you know it; nothing written</source>
-        <translation>错误：站号 %1：%2；若知道机型，请用 --variant %1=机型 指定；未写入任何内容</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
-        <source>machine number %1: %2, %3 (%4)</source>
-        <translation>站号 %1：%2，%3（%4）</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="127"/>
-        <source>interrupted while reading machine number %1: nothing written</source>
-        <translation>读取站号 %1 时中断：未写入任何内容</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="134"/>
-        <source>error: %1: cannot read %2</source>
-        <translation>错误：%1：无法读取 %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="137"/>
-        <source>error: %1 holds a value its profile does not allow: %2</source>
-        <translation>错误：%1 含有其设备描述不允许的值：%2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="140"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
         <source>nothing written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已读取 %2 项设定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="158"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
+        <source>interrupted while reading the golden unit: nothing written</source>
+        <translation>读取标准样机时中断：未写入任何文件</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <source>note: %1</source>
+        <translation>注意：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
+        <source>give its variant with --variant %1=VARIANT</source>
+        <translation>请用 --variant %1=机型 指定其机型</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="130"/>
         <source>Would run the golden unit through the recipe&apos;s steps:</source>
         <translation>将让标准样机按配方步骤运行：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="161"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
         <translation>这会使电机转动：加上 --yes 才会运行。未运行任何电机，也未写入任何文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="166"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="138"/>
         <source>measuring the golden unit (Ctrl-C stops every motor):</source>
         <translation>正在测量标准样机（按 Ctrl-C 停止所有电机）：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="174"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="146"/>
         <source>drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="157"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="198"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="170"/>
         <source>WARNING: %1 is not confirmed stopped</source>
         <translation>警告：%1 未确认停止</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="207"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="179"/>
         <source>limits from the golden unit:</source>
         <translation>由标准样机确定的限值：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="211"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="183"/>
         <source>  drive %1, step %2: %3</source>
         <translation>  驱动器 %1，步骤 %2：%3</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="234"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="206"/>
         <source>error: %1; usage: eol %2</source>
         <translation>错误：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="238"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="210"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>意外的参数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="242"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="214"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>请指定 --from-backup FILE 或 --drives LIST 之一</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="245"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="217"/>
         <source>--measure needs the golden unit on the bus: give --drives LIST</source>
         <translation>--measure 需要总线上的标准样机：请指定 --drives 列表</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="251"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="223"/>
         <source>--margin is for --measure</source>
         <translation>--margin 仅用于 --measure</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
         <source>--margin %1: give a percentage from 1 to 100</source>
         <translation>--margin %1：请输入 1 到 100 的百分比</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="259"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>请用 --product NAME 指定产品名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>请用 --revision REV 指定配方版本</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="264"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="236"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>请用 -o RECIPE 指定要写入的配方文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="267"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>错误：%1 已存在；使用 --force 进行替换</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="243"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="289"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="301"/>
-        <source>Made from a golden unit; variants: %1.</source>
-        <translation>由标准样机制作；机型：%1。</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="313"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="278"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="331"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="296"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已写入 %1：%2 版本 %3，%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="338"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="303"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>错误：配方未通过 &quot;eol recipe check&quot;：请修正，然后用 &quot;opentop-cli eol recipe sign %1&quot; 签名</translation>
     </message>
@@ -6540,93 +6537,93 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="180"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="177"/>
+        <location filename="../model/station/EolStation.cpp" line="177"/>
         <source>opening the results database</source>
         <translation>正在打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="179"/>
+        <location filename="../model/station/EolStation.cpp" line="179"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>无法连接（%1）；正在自动重试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="188"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="192"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="197"/>
+        <location filename="../model/station/EolStation.cpp" line="197"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="204"/>
+        <location filename="../model/station/EolStation.cpp" line="204"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在打开结果数据库；请稍后再试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="206"/>
+        <location filename="../model/station/EolStation.cpp" line="206"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="208"/>
+        <location filename="../model/station/EolStation.cpp" line="208"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="218"/>
+        <location filename="../model/station/EolStation.cpp" line="218"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units：序列号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="222"/>
-        <location filename="../model/eol/EolStation.cpp" line="270"/>
+        <location filename="../model/station/EolStation.cpp" line="222"/>
+        <location filename="../model/station/EolStation.cpp" line="270"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="226"/>
+        <location filename="../model/station/EolStation.cpp" line="226"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驱动器确认安全后，单元 %1 会立即开始</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="230"/>
+        <location filename="../model/station/EolStation.cpp" line="230"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="252"/>
+        <location filename="../model/station/EolStation.cpp" line="252"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="272"/>
+        <location filename="../model/station/EolStation.cpp" line="272"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>工作站有驱动器不安全：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="306"/>
+        <location filename="../model/station/EolStation.cpp" line="306"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>序列号 %1 重新测试,由 %2 批准:%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="342"/>
+        <location filename="../model/station/EolStation.cpp" line="342"/>
         <source>no unit was started yet</source>
         <translation>尚未开始任何产品的测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStation.cpp" line="354"/>
+        <location filename="../model/station/EolStation.cpp" line="354"/>
         <source>cancelled before it started</source>
         <translation>开始前已取消</translation>
     </message>
@@ -8204,7 +8201,7 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::InputFile</name>
     <message>
-        <location filename="../model/files/InputFile.cpp" line="13"/>
+        <location filename="../model/io/InputFile.cpp" line="13"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
@@ -9457,22 +9454,22 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::OutputFile</name>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="24"/>
+        <location filename="../model/io/OutputFile.cpp" line="24"/>
         <source>cannot write %1: it is a directory; name a file</source>
         <translation>无法写入 %1：它是目录；请指定文件</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="26"/>
+        <location filename="../model/io/OutputFile.cpp" line="26"/>
         <source>cannot write %1: the folder %2 does not exist</source>
         <translation>无法写入 %1：文件夹 %2 不存在</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="35"/>
+        <location filename="../model/io/OutputFile.cpp" line="35"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/files/OutputFile.cpp" line="40"/>
+        <location filename="../model/io/OutputFile.cpp" line="40"/>
         <source>it is a directory; name a file</source>
         <translation>是目录；请指定文件</translation>
     </message>
@@ -10818,77 +10815,77 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ProfileTranslation</name>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="79"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="79"/>
         <source>%1 is larger than %2 MB, the most a profile translation may hold</source>
         <translation>%1 大于 %2 MB，即设备描述翻译的上限</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="97"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="97"/>
         <source>larger than %1 MB, the most a profile translation may hold</source>
         <translation>大于 %1 MB，即设备描述翻译的上限</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="102"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="102"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="106"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="106"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="109"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="109"/>
         <source>&quot;format&quot; must be &quot;%1&quot;</source>
         <translation>&quot;format&quot; 必须是 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="112"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="112"/>
         <source>&quot;formatVersion&quot; must be %1</source>
         <translation>&quot;formatVersion&quot; 必须是 %1</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="118"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="118"/>
         <source>&quot;family&quot; is &quot;%1&quot;, but the profile is &quot;%2&quot;</source>
         <translation>&quot;family&quot; 是 &quot;%1&quot;，但设备描述是 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="120"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="120"/>
         <source>&quot;language&quot; is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <translation>&quot;language&quot; 是 &quot;%1&quot;，应为 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="123"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="123"/>
         <source>&quot;texts&quot; must be an object of key → text</source>
         <translation>&quot;texts&quot; 必须是 键 → 文本 的对象</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="127"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="127"/>
         <source>texts &quot;%1&quot; must be a non-empty string</source>
         <translation>texts &quot;%1&quot; 必须是非空字符串</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="144"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="144"/>
         <source>%1 key(s) of the profile missing: %2</source>
         <translation>缺少设备描述的 %1 个键：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="148"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="148"/>
         <source>%1 key(s) the profile does not have: %2</source>
         <translation>%1 个键不属于此设备描述：%2</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="156"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="156"/>
         <source>texts &quot;%1&quot;: the panel codes must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;：面板代码必须与英文相同（%2），实际为（%3）</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="161"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="161"/>
         <source>texts &quot;%1&quot;: the placeholders must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;：占位符必须与英文相同（%2），实际为（%3）</translation>
     </message>
     <message>
-        <location filename="../model/i18n/ProfileTranslation.cpp" line="168"/>
+        <location filename="../model/profile/ProfileTranslation.cpp" line="168"/>
         <source>texts &quot;%1&quot;: the settings named ({setting:…}) must stay as in the English (%2), found (%3)</source>
         <translation>texts &quot;%1&quot;：引用的设定（{setting:…}）必须与英文相同（%2），实际为（%3）</translation>
     </message>
@@ -11030,52 +11027,7 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::Recipe</name>
     <message>
-        <location filename="../model/eol/Recipe.cpp" line="62"/>
-        <source>take communication priority</source>
-        <translation>获取通信优先级</translation>
-    </message>
-    <message>
         <location filename="../model/eol/Recipe.cpp" line="64"/>
-        <source>select running data</source>
-        <translation>选择运行数据</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="66"/>
-        <source>set the speed command</source>
-        <translation>设定速度命令</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="68"/>
-        <source>start</source>
-        <translation>启动</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="70"/>
-        <source>wait for speed</source>
-        <translation>等待速度到达</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="72"/>
-        <source>hold and measure</source>
-        <translation>保持并测量</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="74"/>
-        <source>check for alarms and warnings</source>
-        <translation>检查报警和警告</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="76"/>
-        <source>stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="78"/>
-        <source>read and compare</source>
-        <translation>读取并比较</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/Recipe.cpp" line="106"/>
         <source>position %1 (machine number %2)</source>
         <translation>位置 %1（站号 %2）</translation>
     </message>
@@ -11330,218 +11282,218 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="48"/>
         <source>Recipe editor</source>
         <translation>配方编辑器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="67"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
         <source>Revision:</source>
         <translation>版本：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="69"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
         <source>Product:</source>
         <translation>产品：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
         <source>Description:</source>
         <translation>说明：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="72"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>New from drives on the bus…</source>
         <translation>从总线上的驱动器新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>New from backup file…</source>
         <translation>从备份文件新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Open…</source>
         <translation>打开…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="114"/>
         <source>Save as…</source>
         <translation>另存为…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>从标准样机在总线上的驱动器或其备份文件生成配方，或打开已有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
         <source>the recipe is empty</source>
         <translation>配方为空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通过检查：可以保存和运行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 个问题：修正之前无法保存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通过检查（%n 个问题）；未保存任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1</source>
         <translation>已打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已打开 %1，但它无法按原样载入（%2）。保存时会进行检查并重新签名。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="323"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
         <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从 %1 新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
         <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
         <translation>站号 %1 不是总线上的已知驱动器；请先扫描总线</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
         <source>Reading the golden unit&apos;s settings…</source>
         <translation>正在读取标准样机的设定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="340"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="355"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="356"/>
+        <source>machine number %1 is not on the bus</source>
+        <translation>站号 %1 不在总线上</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="369"/>
         <source>cancelled: no recipe was made</source>
         <translation>已取消：未生成配方</translation>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="394"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="395"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="382"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="409"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
         <source>New recipe</source>
         <translation>新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
         <source>Product name:</source>
         <translation>产品名称：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
         <source>Golden unit&apos;s backup file</source>
         <translation>标准样机的备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="418"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="405"/>
         <source>Backups (*.json)</source>
         <translation>备份 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="430"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
         <source>No drives on the bus: connect and scan first.</source>
         <translation>总线上没有驱动器：请先连接并扫描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="438"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
         <source>New recipe from drives</source>
         <translation>从驱动器新建配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="439"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="426"/>
         <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
         <translation>标准样机各驱动器的站号（已找到：%1）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="449"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="436"/>
         <source>&quot;%1&quot; is not a machine number (1–247)</source>
         <translation>&quot;%1&quot; 不是站号（1–247）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="445"/>
         <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
         <translation>已从总线上的驱动器新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="469"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="456"/>
         <source>Save recipe</source>
         <translation>保存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="471"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="476"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
         <source>Saved and signed: %1</source>
         <translation>已保存并签名：%1</translation>
     </message>
@@ -11557,6 +11509,24 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <location filename="../model/eol/RecipeFile.cpp" line="272"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::RecipeFromDrives</name>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="66"/>
+        <source>machine number %1: %2; give its variant if you know it</source>
+        <translation>站号 %1：%2；如知道其机型请指定</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="74"/>
+        <source>machine number %1: %2, %3 (%4)</source>
+        <translation>站号 %1：%2，%3（%4）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeFromDrives.cpp" line="113"/>
+        <source>Made from a golden unit; variants: %1.</source>
+        <translation>由标准样机制作；机型：%1。</translation>
     </message>
 </context>
 <context>
@@ -11610,88 +11580,88 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="45"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="47"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 文件：%1，位于字节 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="49"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="51"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>不是 OpenTOP 配方文件：JSON 不是对象</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="72"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="74"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;：配方未指定驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="77"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="79"/>
         <source>%1: must be an object</source>
         <translation>%1：必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="94"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 配方文件（&quot;format&quot; 为 &quot;%1&quot;，而非 &quot;%2&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="98"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 配方文件（没有 &quot;format&quot;: &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="101"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必须是从 1 起的整数</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="105"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>由更新版本的 OpenTOP 写入（配方格式版本 %1）；本版本读取配方格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="111"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>配方没有校验和（&quot;checksum&quot;: &quot;sha256:…&quot;）；它不是由 OpenTOP 写入的，或写入后被修改过</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="117"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>配方在写入后被修改过（校验和不一致）；请用 OpenTOP 打开并保存以接受该修改</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="132"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;machineNumber&quot; 必须是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="211"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="136"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="213"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="179"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="181"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1（%2）：&quot;value&quot; 必须是数字或文本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="195"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="197"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1（%2）：&quot;source&quot; 必须是 &quot;csv&quot; 或 &quot;operator&quot;，而不是 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="208"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1：未知步骤类型 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="222"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="226"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1：&quot;spno&quot; 必须是运行数据编号，例如 2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="235"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="239"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1：&quot;direction&quot; 必须是 &quot;cw&quot; 或 &quot;ccw&quot;</translation>
     </message>
@@ -12063,303 +12033,308 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RecipeStepKinds</name>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="17"/>
+        <source>take communication priority</source>
+        <translation>获取通信优先级</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="20"/>
+        <source>select running data</source>
+        <translation>选择运行数据</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="21"/>
+        <source>Running data:</source>
+        <translation>运行数据：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="24"/>
+        <source>set the speed command</source>
+        <translation>设定速度命令</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="25"/>
+        <source>Speed command:</source>
+        <translation>速度命令：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <source>Unit:</source>
+        <translation>单位：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <source>the speed command&apos;s unit</source>
+        <translation>速度指令的单位</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
+        <source>start</source>
+        <translation>启动</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="30"/>
+        <source>Direction:</source>
+        <translation>旋转方向：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
+        <source>wait for speed</source>
+        <translation>等待速度到达</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="34"/>
+        <source>Target speed:</source>
+        <translation>目标速度：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="35"/>
+        <source>empty: the drive&apos;s own target speed</source>
+        <translation>留空：驱动器自身的目标速度</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
+        <source>Tolerance (±):</source>
+        <translation>允差（±）：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <source>the speed&apos;s unit</source>
+        <translation>速度的单位</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <source>Within:</source>
+        <translation>时限：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="41"/>
+        <source>hold and measure</source>
+        <translation>保持并测量</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
+        <source>Duration:</source>
+        <translation>保持时间：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
+        <source>Deceleration time:</source>
+        <translation>减速时间：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
+        <source>empty: the drive&apos;s setting</source>
+        <translation>留空：驱动器的设定值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
+        <source>Margin:</source>
+        <translation>余量：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <source>check for alarms and warnings</source>
+        <translation>检查报警和警告</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="53"/>
+        <source>read and compare</source>
+        <translation>读取并比较</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
+        <source>Parameter:</source>
+        <translation>参数：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <source>Lower limit:</source>
+        <translation>下限：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <source>empty: none</source>
+        <translation>留空：无</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <source>Upper limit:</source>
+        <translation>上限：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <source>the value&apos;s unit</source>
+        <translation>数值的单位</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="58"/>
+        <source>Or equals:</source>
+        <translation>或等于：</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
+        <source>the expected text, instead of limits</source>
+        <translation>期望的文本，代替限值</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="44"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
         <source>What it does</source>
         <translation>内容</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="52"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="55"/>
         <source>Add step</source>
         <translation>添加步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="57"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="60"/>
         <source>Remove</source>
         <translation>删除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="58"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
         <source>Move up</source>
         <translation>上移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="59"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
         <source>Move down</source>
         <translation>下移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="90"/>
-        <source>Take communication priority</source>
-        <translation>切换为通信优先级</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="91"/>
-        <source>Select running data</source>
-        <translation>选择运行数据</translation>
-    </message>
-    <message>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
-        <source>Set the speed command</source>
-        <translation>设置速度指令</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
-        <source>Start</source>
-        <translation>启动</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="94"/>
-        <source>Wait for the speed</source>
-        <translation>等待达到速度</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="95"/>
-        <source>Hold and measure</source>
-        <translation>保持并测量</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="96"/>
-        <source>Stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="97"/>
-        <source>No alarm or warning</source>
-        <translation>无报警或警告</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="98"/>
-        <source>Read and compare</source>
-        <translation>读取并比较</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="100"/>
         <source>(unknown step: %1)</source>
         <translation>（未知步骤：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="105"/>
         <source>running data SPno%1</source>
         <translation>运行数据 SPno%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="107"/>
         <source>speed command %1 %2</source>
         <translation>速度指令 %1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="115"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
         <source>%1 ± %2 %3 within %4 s</source>
         <translation>%4 s 内达到 %1 ± %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="117"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="113"/>
         <source>the drive&apos;s target speed</source>
         <translation>驱动器的目标速度</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="116"/>
         <source>%1 s, %n limit(s)</source>
         <translation>
             <numerusform>%1 s，%n 个限值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="124"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
         <source>stopped within %1 s + %2 s</source>
         <translation>%1 s + %2 s 内停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="126"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
         <source>stopped within the deceleration time + %1 s</source>
         <translation>减速时间 + %1 s 内停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
         <source>no value chosen to read yet</source>
         <translation>尚未选择要读取的值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="133"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
         <source>%1 is &quot;%2&quot;</source>
         <translation>%1 为“%2”</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="134"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="130"/>
         <source>%1 between %2 and %3 %4</source>
         <translation>%1 在 %2 至 %3 %4 之间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="135"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="136"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="258"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>No step selected</source>
         <translation>未选择步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="259"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>添加步骤，或选择一个步骤进行编辑。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="265"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="261"/>
         <source>Step %1: %2</source>
         <translation>步骤 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="274"/>
-        <source>Running data:</source>
-        <translation>运行数据：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="276"/>
-        <source>Speed command:</source>
-        <translation>速度指令：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
         <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
-        <source>Unit:</source>
-        <translation>单位：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="277"/>
-        <source>the speed command&apos;s unit</source>
-        <translation>速度指令的单位</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="287"/>
-        <source>Direction:</source>
-        <translation>旋转方向：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="289"/>
-        <source>Target speed:</source>
-        <translation>目标速度：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="290"/>
-        <source>empty: the drive&apos;s own target speed</source>
-        <translation>留空：驱动器自身的目标速度</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="291"/>
-        <source>Tolerance (±):</source>
-        <translation>允差（±）：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
-        <source>the speed&apos;s unit</source>
-        <translation>速度的单位</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <source>Within:</source>
-        <translation>时限：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="295"/>
-        <source>Duration:</source>
-        <translation>保持时间：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="301"/>
-        <source>Deceleration time:</source>
-        <translation>减速时间：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="302"/>
-        <source>empty: the drive&apos;s setting</source>
-        <translation>留空：驱动器的设定值</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="303"/>
-        <source>Margin:</source>
-        <translation>余量：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="306"/>
-        <source>Lower limit:</source>
-        <translation>下限：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="307"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="309"/>
-        <source>empty: none</source>
-        <translation>留空：无</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="308"/>
-        <source>Upper limit:</source>
-        <translation>上限：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="310"/>
-        <source>the value&apos;s unit</source>
-        <translation>数值的单位</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="311"/>
-        <source>Or equals:</source>
-        <translation>或等于：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="312"/>
-        <source>the expected text, instead of limits</source>
-        <translation>期望的文本，代替限值</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="314"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
         <source>This step has no settings.</source>
         <translation>此步骤没有设置项。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="357"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="361"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="359"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="363"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="369"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="373"/>
         <source>Parameter:</source>
         <translation>参数：</translation>
     </message>
@@ -12561,98 +12536,93 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>写入计划（不加此选项时 restore 仅显示计划）。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="54"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1：未读取驱动器的设定；未比较，未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="86"/>
-        <location filename="../cli/RestoreCommand.cpp" line="124"/>
+        <location filename="../cli/RestoreCommand.cpp" line="60"/>
+        <location filename="../cli/RestoreCommand.cpp" line="98"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>file value</source>
         <translation>文件值</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="91"/>
+        <location filename="../cli/RestoreCommand.cpp" line="65"/>
         <source>device value</source>
         <translation>设备值</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="92"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="106"/>
+        <location filename="../cli/RestoreCommand.cpp" line="80"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 项已写入并校验，%2 项未变，%3 项失败，%4 项未尝试</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="112"/>
+        <location filename="../cli/RestoreCommand.cpp" line="86"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 项未确认</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="114"/>
+        <location filename="../cli/RestoreCommand.cpp" line="88"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已写入 %2 条保存命令中的 %1 条</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="149"/>
+        <location filename="../cli/RestoreCommand.cpp" line="123"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>错误：请指定一个备份文件：restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="137"/>
         <source>error: --ids: %1</source>
         <translation>错误：--ids：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="168"/>
+        <location filename="../cli/RestoreCommand.cpp" line="142"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>错误：%1 中没有站号为 %2 的驱动器；其中有 %3</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="191"/>
+        <location filename="../cli/RestoreCommand.cpp" line="163"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="181"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="228"/>
-        <source>not attempted</source>
-        <translation>未尝试</translation>
-    </message>
-    <message>
-        <location filename="../cli/RestoreCommand.cpp" line="231"/>
+        <location filename="../cli/RestoreCommand.cpp" line="199"/>
         <source>%1: not attempted</source>
         <translation>%1：未尝试</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="253"/>
+        <location filename="../cli/RestoreCommand.cpp" line="228"/>
         <source>dry run: nothing written</source>
         <translation>仅预览：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="254"/>
+        <location filename="../cli/RestoreCommand.cpp" line="229"/>
         <source>nothing written; add --yes to write</source>
         <translation>未写入任何内容；加上 --yes 才会写入</translation>
     </message>
@@ -12660,206 +12630,201 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreDialog</name>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="37"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
         <source>&amp;Preview</source>
         <translation>预览(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="38"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
         <source>&amp;Write to drives…</source>
         <translation>写入驱动器(&amp;W)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="39"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="40"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="41"/>
         <source>&amp;Save report…</source>
         <translation>保存报告(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="42"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="43"/>
         <source>Restore from a backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="44"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
         <source>No file chosen</source>
         <translation>未选择文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="45"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="46"/>
         <source>&amp;Choose file…</source>
         <translation>选择文件(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="47"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="48"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="58"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>读取驱动器并显示将要改变的内容；不写入任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>写入预览的修改，每项都通过回读校验</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>当前写入校验完成后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>将报告保存为文本；文件名以 .csv 结尾时保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="99"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="112"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="104"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="117"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="105"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="170"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒绝，不会写入任何内容：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="110"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="123"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>文件中有 %n 台驱动器。请选择要恢复的内容，然后点击“预览”。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="137"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="145"/>
         <source>Refused, nothing written:</source>
         <translation>已拒绝，未写入任何内容：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="139"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="147"/>
         <source>Drive %1 from %2: %3</source>
         <translation>来自 %2 的驱动器 %1：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="169"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="177"/>
         <source>Choose a backup file first.</source>
         <translation>请先选择备份文件。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="185"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="193"/>
         <source>Nothing was read or written: %1.</source>
         <translation>未读取也未写入任何数据：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="220"/>
-        <source>not attempted</source>
-        <translation>未尝试</translation>
-    </message>
-    <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
         <source>Reading drive %1…</source>
         <translation>正在读取驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="225"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
         <source>Writing drive %1…</source>
         <translation>正在写入驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="232"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="93"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驱动器 %1：%2（%v / %m）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="260"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="228"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>正在等待当前写入校验完成后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="275"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="356"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="361"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="243"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="324"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="329"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="278"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="246"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 项设定待写入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="285"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="253"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="288"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="256"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未写入任何内容。点击“写入驱动器”以应用。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="289"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
         <source>Nothing written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="305"/>
         <source>Restore from backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="364"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="332"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>将 %n 项设定写入驱动器 %1，每项都通过回读校验？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>Write to drives</source>
         <translation>写入驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="369"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="374"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="342"/>
         <source>Save restore report</source>
         <translation>保存恢复报告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="375"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文本 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="380"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="348"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -12867,124 +12832,124 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestorePlan</name>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="70"/>
+        <location filename="../model/files/RestorePlan.cpp" line="71"/>
         <source>the file holds a %1 drive (%2), but machine number %3 is a %4 drive; nothing written</source>
         <translation>文件中是 %1 驱动器（%2），但站号 %3 是 %4 驱动器；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="77"/>
+        <location filename="../model/files/RestorePlan.cpp" line="78"/>
         <source>the file is from a %1 (%2), but machine number %3 is a %4 (%5); their allowed values differ, nothing written</source>
         <translation>文件来自 %1（%2），但站号 %3 是 %4（%5）；两者的允许值不同，未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="84"/>
+        <location filename="../model/files/RestorePlan.cpp" line="85"/>
         <source>the drive does not tell its variant: every value must suit all variants (name it with --variant to use its own ranges)</source>
         <translation>驱动器不报告其机型：每个值都必须适用于所有机型（用 --variant 指定机型以使用其自身范围）</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="153"/>
+        <location filename="../model/files/RestorePlan.cpp" line="143"/>
         <source>%1: the value cannot be written exactly</source>
         <translation>%1：无法精确写入该值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/files/RestorePlan.cpp" line="173"/>
+        <location filename="../model/files/RestorePlan.cpp" line="163"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>文件中有 %n 个值不能写入该驱动器；未写入任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="255"/>
+        <location filename="../model/files/RestorePlan.cpp" line="245"/>
         <source>%1 sent after the writes, so that the settings written survive power-off</source>
         <translation>写入后发送 %1，使写入的设定在断电后仍保留</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="258"/>
+        <location filename="../model/files/RestorePlan.cpp" line="248"/>
         <source>%1 sent: settings written to this drive earlier (by an interrupted restore, a page or the command line) are not stored yet</source>
         <translation>已发送 %1：之前写入此驱动器的设定（中断的恢复、页面或命令行）尚未保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="262"/>
+        <location filename="../model/files/RestorePlan.cpp" line="252"/>
         <source>%1 not sent: nothing it stores is written. What a drive has stored cannot be read back: if it loses settings at power-off, switch it off and on and restore again</source>
         <translation>未发送 %1：没有写入它所保存的设定。驱动器已保存的内容无法读回：如果断电后丢失设定，请断电再上电后重新恢复</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="296"/>
+        <location filename="../model/files/RestorePlan.cpp" line="286"/>
         <source>keep</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="298"/>
+        <location filename="../model/files/RestorePlan.cpp" line="288"/>
         <source>write</source>
         <translation>写入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="300"/>
+        <location filename="../model/files/RestorePlan.cpp" line="290"/>
         <source>store</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="311"/>
+        <location filename="../model/files/RestorePlan.cpp" line="301"/>
         <source>unchanged</source>
         <translation>未变</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="314"/>
+        <location filename="../model/files/RestorePlan.cpp" line="304"/>
         <source>written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="315"/>
+        <location filename="../model/files/RestorePlan.cpp" line="305"/>
         <source>written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="317"/>
+        <location filename="../model/files/RestorePlan.cpp" line="307"/>
         <source>failed: %1</source>
         <translation>失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="319"/>
+        <location filename="../model/files/RestorePlan.cpp" line="309"/>
         <source>not attempted</source>
         <translation>未尝试</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="321"/>
+        <location filename="../model/files/RestorePlan.cpp" line="311"/>
         <source>not confirmed (%1): the drive may or may not hold it; run the restore again to read it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；请再次执行恢复以回读</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="346"/>
+        <location filename="../model/files/RestorePlan.cpp" line="336"/>
         <source>planned</source>
         <translation>已计划</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="348"/>
+        <location filename="../model/files/RestorePlan.cpp" line="338"/>
         <source>restored</source>
         <translation>已恢复</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="350"/>
+        <location filename="../model/files/RestorePlan.cpp" line="340"/>
         <source>refused</source>
         <translation>已拒绝</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="352"/>
+        <location filename="../model/files/RestorePlan.cpp" line="342"/>
         <source>communication failure</source>
         <translation>通信失败</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="354"/>
+        <location filename="../model/files/RestorePlan.cpp" line="344"/>
         <source>verification mismatch</source>
         <translation>校验不一致</translation>
     </message>
     <message>
-        <location filename="../model/files/RestorePlan.cpp" line="356"/>
+        <location filename="../model/files/RestorePlan.cpp" line="346"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
@@ -13762,12 +13727,12 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::RunningData</name>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="76"/>
+        <location filename="../model/profile/RunningData.cpp" line="76"/>
         <source>SPno%1 slows down from %2 r/min in %3 s: the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>SPno%1 在 %3 s 内从 %2 r/min 减速：手册要求从高速（约 %5 r/min 及以上）减速时，减速时间应大于 %4 s。</translation>
     </message>
     <message>
-        <location filename="../model/run/RunningData.cpp" line="144"/>
+        <location filename="../model/profile/RunningData.cpp" line="144"/>
         <source>Short deceleration from high speed on %1 (%2 r/min in %3 s): the manual asks for a deceleration time of more than %4 s when slowing down from high speed (about %5 r/min and above).</source>
         <translation>%1 从高速减速过快（%3 s 内从 %2 r/min 减速）：手册要求从高速（约 %5 r/min 及以上）减速时，减速时间应大于 %4 s。</translation>
     </message>
@@ -14270,152 +14235,152 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="87"/>
+        <location filename="../cli/SetCommand.cpp" line="88"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>按名称写入参数，经过验证、回读和校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="97"/>
+        <location filename="../cli/SetCommand.cpp" line="98"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>按地址写入寄存器：ADDR=VALUE（可重复；配合 --fc 16 时可写 VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="98"/>
+        <location filename="../cli/SetCommand.cpp" line="99"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="100"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 写入的功能码：6（默认）或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="100"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="108"/>
+        <location filename="../cli/SetCommand.cpp" line="109"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>错误：用法：set ID NAME=VALUE...（例如 set 1 spno2.accel=2.5），或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="120"/>
+        <location filename="../cli/SetCommand.cpp" line="121"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>错误：&quot;%1&quot; 不是 NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="127"/>
+        <location filename="../cli/SetCommand.cpp" line="128"/>
         <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
         <translation>错误：%1 指定了两次（%2=%3 和 %4）；每项设定只能指定一次；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="76"/>
-        <location filename="../cli/SetCommand.cpp" line="138"/>
-        <location filename="../cli/SetCommand.cpp" line="272"/>
+        <location filename="../cli/SetCommand.cpp" line="77"/>
+        <location filename="../cli/SetCommand.cpp" line="139"/>
+        <location filename="../cli/SetCommand.cpp" line="279"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="149"/>
         <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="151"/>
+        <location filename="../cli/SetCommand.cpp" line="152"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="153"/>
+        <location filename="../cli/SetCommand.cpp" line="154"/>
         <source>%1 is a %2 command; add --yes to send it</source>
         <translation>%1 是%2命令；加上 --yes 才会发送</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="208"/>
+        <location filename="../cli/SetCommand.cpp" line="209"/>
         <source>error: cannot read %1 to check the values; nothing written</source>
         <translation>错误：无法读取 %1 来检查这些值；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="192"/>
-        <location filename="../cli/SetCommand.cpp" line="255"/>
-        <location filename="../cli/SetCommand.cpp" line="266"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="262"/>
+        <location filename="../cli/SetCommand.cpp" line="273"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="94"/>
+        <location filename="../cli/SetCommand.cpp" line="95"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>确认会使电机运动、复位、清除、初始化或保存的命令，以及串口配置锁定的设定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="243"/>
+        <location filename="../cli/SetCommand.cpp" line="250"/>
         <source>Add --yes to set it.</source>
         <translation>加上 --yes 才会设定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="78"/>
-        <location filename="../cli/SetCommand.cpp" line="273"/>
+        <location filename="../cli/SetCommand.cpp" line="79"/>
+        <location filename="../cli/SetCommand.cpp" line="280"/>
         <source>nothing was written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="301"/>
+        <location filename="../cli/SetCommand.cpp" line="308"/>
         <source>not written (interrupted)</source>
         <translation>未写入（已中断）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="314"/>
+        <location filename="../cli/SetCommand.cpp" line="321"/>
         <source>next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="316"/>
+        <location filename="../cli/SetCommand.cpp" line="323"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（出厂通信设定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="360"/>
+        <location filename="../cli/SetCommand.cpp" line="367"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="366"/>
+        <location filename="../cli/SetCommand.cpp" line="373"/>
         <source>written, verified</source>
         <translation>已写入，已校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="368"/>
+        <location filename="../cli/SetCommand.cpp" line="375"/>
         <source>written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="369"/>
+        <location filename="../cli/SetCommand.cpp" line="376"/>
         <source>written (command, not readable)</source>
         <translation>已写入（命令，不可读）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="371"/>
+        <location filename="../cli/SetCommand.cpp" line="378"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；可用 &quot;get&quot; 回读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="382"/>
+        <location filename="../cli/SetCommand.cpp" line="389"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="396"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注意：驱动器从下次上电起使用 %1：请将驱动器断电再上电，然后用新设定（--baud、--parity）连接</translation>
     </message>

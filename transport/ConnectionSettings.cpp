@@ -1,4 +1,4 @@
-#include "ConnectionSettings.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QCoreApplication>
 #include <QStringList>

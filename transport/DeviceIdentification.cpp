@@ -1,4 +1,4 @@
-#include "DeviceIdentification.h"
+#include "transport/DeviceIdentification.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
-#include "DriveLineTable.h"
+#include "transport/DriveLineTable.h"
 
-#include "ModbusRequest.h"
+#include "transport/ModbusRequest.h"
 
 #include <algorithm>
 

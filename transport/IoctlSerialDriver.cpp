@@ -1,4 +1,4 @@
-#include "IoctlSerialDriver.h"
+#include "transport/IoctlSerialDriver.h"
 
 #include <cerrno>
 #include <linux/serial.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "SerialDriver.h"
+#include "transport/SerialDriver.h"
 
 struct _modbus; // libmodbus' modbus_t, kept out of this header
 

@@ -1,7 +1,7 @@
-#include "LibmodbusBackend.h"
+#include "transport/LibmodbusBackend.h"
 
-#include "RtuFrame.h"
-#include "TransportLog.h"
+#include "transport/RtuFrame.h"
+#include "transport/TransportLog.h"
 
 #include <QCoreApplication>
 #include <algorithm>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "LineNotes.h"
-#include "ModbusBackend.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/LineNotes.h"
+#include "transport/ModbusBackend.h"
 
 #include <QElapsedTimer>
 #include <QSet>

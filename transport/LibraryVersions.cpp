@@ -1,4 +1,4 @@
-#include "LibraryVersions.h"
+#include "transport/LibraryVersions.h"
 
 #include <modbus.h>
 

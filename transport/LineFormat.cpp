@@ -1,4 +1,4 @@
-#include "LineFormat.h"
+#include "transport/LineFormat.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

@@ -1,8 +1,8 @@
-#include "LineNotes.h"
+#include "transport/LineNotes.h"
 
-#include "ModbusCrc.h"
-#include "ModbusRequest.h"
-#include "ModbusResult.h"
+#include "transport/ModbusCrc.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusResult.h"
 
 #include <modbus.h>
 #include <utility>

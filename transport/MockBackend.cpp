@@ -1,6 +1,6 @@
-#include "MockBackend.h"
+#include "transport/MockBackend.h"
 
-#include "RtuFrame.h"
+#include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ModbusBackend.h"
+#include "transport/ModbusBackend.h"
 
 #include <QVector>
 #include <functional>

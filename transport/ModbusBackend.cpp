@@ -1,7 +1,7 @@
-#include "ModbusBackend.h"
+#include "transport/ModbusBackend.h"
 
-#include "DeviceIdentification.h"
-#include "TrafficLog.h"
+#include "transport/DeviceIdentification.h"
+#include "transport/TrafficLog.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

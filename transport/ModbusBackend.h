@@ -1,9 +1,9 @@
 #pragma once
 
-#include "ModbusRequest.h"
-#include "ModbusResult.h"
-#include "SerialLineReport.h"
-#include "TrafficEntry.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusResult.h"
+#include "transport/SerialLineReport.h"
+#include "transport/TrafficEntry.h"
 
 #include <QString>
 #include <atomic>

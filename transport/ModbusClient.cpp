@@ -1,7 +1,7 @@
-#include "ModbusClient.h"
+#include "transport/ModbusClient.h"
 
-#include "ModbusBackend.h"
-#include "ModbusClientWorker.h"
+#include "transport/ModbusBackend.h"
+#include "transport/ModbusClientWorker.h"
 
 namespace opentop {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "ModbusRequest.h"
-#include "ModbusResult.h"
-#include "SerialLineReport.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusResult.h"
+#include "transport/SerialLineReport.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,9 +1,9 @@
-#include "ModbusClientWorker.h"
+#include "transport/ModbusClientWorker.h"
 
-#include "DriveLineTable.h"
-#include "ModbusBackend.h"
-#include "RetryPolicy.h"
-#include "TransportLog.h"
+#include "transport/DriveLineTable.h"
+#include "transport/ModbusBackend.h"
+#include "transport/RetryPolicy.h"
+#include "transport/TransportLog.h"
 
 #include <QCoreApplication>
 #include <algorithm>

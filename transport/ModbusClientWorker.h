@@ -1,9 +1,9 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "ModbusClient.h"
-#include "ModbusRequest.h"
-#include "ModbusResult.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/ModbusClient.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusResult.h"
 
 #include <future>
 #include <memory>

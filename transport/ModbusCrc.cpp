@@ -1,4 +1,4 @@
-#include "ModbusCrc.h"
+#include "transport/ModbusCrc.h"
 
 #include <array>
 

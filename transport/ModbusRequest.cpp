@@ -1,4 +1,4 @@
-#include "ModbusRequest.h"
+#include "transport/ModbusRequest.h"
 
 #include <QCoreApplication>
 #include <QStringList>

@@ -1,4 +1,4 @@
-#include "ModbusResult.h"
+#include "transport/ModbusResult.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
-#include "PortLock.h"
+#include "transport/PortLock.h"
 
-#include "TransportLog.h"
+#include "transport/TransportLog.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "PortLockFile.h"
+#include "transport/PortLockFile.h"
 
 #include <QString>
 #include <QStringList>

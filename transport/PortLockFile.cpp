@@ -1,6 +1,6 @@
-#include "PortLockFile.h"
+#include "transport/PortLockFile.h"
 
-#include "TransportLog.h"
+#include "transport/TransportLog.h"
 
 #include <QCoreApplication>
 #include <QDir>

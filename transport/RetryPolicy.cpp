@@ -1,4 +1,4 @@
-#include "RetryPolicy.h"
+#include "transport/RetryPolicy.h"
 
 #include <algorithm>
 

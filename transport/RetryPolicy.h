@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ModbusResult.h"
+#include "transport/ModbusResult.h"
 
 namespace opentop {
 

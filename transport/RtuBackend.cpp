@@ -1,8 +1,8 @@
-#include "RtuBackend.h"
+#include "transport/RtuBackend.h"
 
-#include "IoctlSerialDriver.h"
-#include "RtuFrame.h"
-#include "SerialSysfs.h"
+#include "transport/IoctlSerialDriver.h"
+#include "transport/RtuFrame.h"
+#include "transport/SerialSysfs.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "LibmodbusBackend.h"
-#include "PortLock.h"
-#include "SerialLineSetup.h"
+#include "transport/LibmodbusBackend.h"
+#include "transport/PortLock.h"
+#include "transport/SerialLineSetup.h"
 
 #include <memory>
 

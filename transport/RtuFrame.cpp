@@ -1,6 +1,6 @@
-#include "RtuFrame.h"
+#include "transport/RtuFrame.h"
 
-#include "ModbusCrc.h"
+#include "transport/ModbusCrc.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

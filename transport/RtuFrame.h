@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ModbusRequest.h"
-#include "ModbusResult.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusResult.h"
 
 #include <QByteArray>
 

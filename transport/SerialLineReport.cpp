@@ -1,4 +1,4 @@
-#include "SerialLineReport.h"
+#include "transport/SerialLineReport.h"
 
 #include <QCoreApplication>
 #include <QStringList>

@@ -1,7 +1,7 @@
-#include "SerialLineSetup.h"
+#include "transport/SerialLineSetup.h"
 
-#include "SerialSysfs.h"
-#include "TransportLog.h"
+#include "transport/SerialSysfs.h"
+#include "transport/TransportLog.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "SerialDriver.h"
-#include "SerialLineReport.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/SerialDriver.h"
+#include "transport/SerialLineReport.h"
 
 #include <optional>
 

@@ -1,4 +1,4 @@
-#include "SerialSysfs.h"
+#include "transport/SerialSysfs.h"
 
 #include <QFile>
 #include <QFileInfo>

@@ -1,7 +1,7 @@
-#include "TcpBackend.h"
+#include "transport/TcpBackend.h"
 
-#include "ModbusCrc.h"
-#include "RtuFrame.h"
+#include "transport/ModbusCrc.h"
+#include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
 #include <algorithm>

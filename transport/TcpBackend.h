@@ -1,6 +1,6 @@
 #pragma once
 
-#include "LibmodbusBackend.h"
+#include "transport/LibmodbusBackend.h"
 
 namespace opentop {
 

@@ -1,6 +1,6 @@
-#include "TrafficEntry.h"
+#include "transport/TrafficEntry.h"
 
-#include "RtuFrame.h"
+#include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
 

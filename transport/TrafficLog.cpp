@@ -1,6 +1,6 @@
-#include "TrafficLog.h"
+#include "transport/TrafficLog.h"
 
-#include "ModbusRequest.h"
+#include "transport/ModbusRequest.h"
 
 #include <QMutexLocker>
 #include <iterator>

@@ -1,4 +1,4 @@
-#include "TransportLog.h"
+#include "transport/TransportLog.h"
 
 namespace opentop {
 

@@ -5,14 +5,14 @@
 //
 // Exit status: 0 every goal met, 1 a benchmark could not measure, 3 a goal was missed,
 // 2 a usage error.
-#include "BenchReport.h"
-#include "BusBackupBenchmark.h"
-#include "EolBenchmark.h"
-#include "GuiBenchmark.h"
-#include "MachineInfo.h"
-#include "PollBenchmark.h"
-#include "ScanBenchmark.h"
-#include "StartupBenchmark.h"
+#include "bench/BenchReport.h"
+#include "bench/BusBackupBenchmark.h"
+#include "bench/EolBenchmark.h"
+#include "bench/GuiBenchmark.h"
+#include "bench/MachineInfo.h"
+#include "bench/PollBenchmark.h"
+#include "bench/ScanBenchmark.h"
+#include "bench/StartupBenchmark.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

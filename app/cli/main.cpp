@@ -1,9 +1,9 @@
 // opentop-cli: the command line. Composition root only; the commands live in cli/.
-#include "CliApp.h"
-#include "CliContext.h"
-#include "i18n/Language.h"
-#include "monitor/LocalTimeZone.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/CliApp.h"
+#include "cli/CliContext.h"
+#include "model/i18n/Language.h"
+#include "model/monitor/LocalTimeZone.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>

@@ -1,10 +1,10 @@
-#include "MonitorOptions.h"
+#include "app/gui/MonitorOptions.h"
 
-#include "TrafficLog.h"
-#include "bus/BusDrives.h"
-#include "bus/BusPanel.h"
-#include "main/MainWindow.h"
-#include "monitor/MonitorHub.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "transport/TrafficLog.h"
+#include "ui/bus/BusPanel.h"
+#include "ui/main/MainWindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -1,9 +1,9 @@
-#include "ProductionOptions.h"
+#include "app/gui/ProductionOptions.h"
 
-#include "eol/EolStation.h"
-#include "eol/ProductionMode.h"
-#include "eol/ProductionView.h"
-#include "main/MainWindow.h"
+#include "model/station/EolStation.h"
+#include "ui/eol/ProductionMode.h"
+#include "ui/eol/ProductionView.h"
+#include "ui/main/MainWindow.h"
 
 #include <QAction>
 #include <QCommandLineParser>

@@ -1,7 +1,7 @@
-#include "StartupProbe.h"
+#include "app/gui/StartupProbe.h"
 
-#include "bus/BusDrives.h"
-#include "main/MainWindow.h"
+#include "model/bus/BusDrives.h"
+#include "ui/main/MainWindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

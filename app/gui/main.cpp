@@ -1,18 +1,18 @@
 // opentop: the desktop application. Composition root only: options, the backend factory and
 // the main window.
-#include "BackendFactory.h"
-#include "ConnectionOptions.h"
-#include "ModbusClient.h"
-#include "MonitorOptions.h"
-#include "ProductionOptions.h"
-#include "StartupProbe.h"
-#include "TrafficLog.h"
-#include "bus/BusSpec.h"
-#include "connection/ConnectionDialog.h"
-#include "i18n/Language.h"
-#include "main/MainWindow.h"
-#include "monitor/LocalTimeZone.h"
-#include "pages/EditorRegistry.h"
+#include "app/gui/MonitorOptions.h"
+#include "app/gui/ProductionOptions.h"
+#include "app/gui/StartupProbe.h"
+#include "connection/BackendFactory.h"
+#include "connection/ConnectionOptions.h"
+#include "model/bus/BusSpec.h"
+#include "model/i18n/Language.h"
+#include "model/monitor/LocalTimeZone.h"
+#include "transport/ModbusClient.h"
+#include "transport/TrafficLog.h"
+#include "ui/connection/ConnectionDialog.h"
+#include "ui/main/MainWindow.h"
+#include "ui/pages/EditorRegistry.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -1,6 +1,6 @@
 // opentop-sim: simulated TROY DBU drives and DC PID controllers on a pty or Modbus TCP.
-#include "SimApp.h"
-#include "i18n/Language.h"
+#include "model/i18n/Language.h"
+#include "sim/SimApp.h"
 
 #include <QCoreApplication>
 #include <cstdio>

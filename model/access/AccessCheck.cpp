@@ -1,7 +1,7 @@
-#include "access/AccessCheck.h"
+#include "model/access/AccessCheck.h"
 
-#include "access/AuditTrail.h"
-#include "eol/ResultDatabase.h"
+#include "model/access/AuditTrail.h"
+#include "model/eol/ResultDatabase.h"
 
 namespace opentop {
 

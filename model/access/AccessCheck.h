@@ -1,8 +1,8 @@
 #pragma once
 
-#include "access/AccessPolicy.h"
-#include "access/RecipeApprovals.h"
-#include "access/UserStore.h"
+#include "model/access/AccessPolicy.h"
+#include "model/access/RecipeApprovals.h"
+#include "model/access/UserStore.h"
 
 #include <QCoreApplication>
 #include <optional>

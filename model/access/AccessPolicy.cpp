@@ -1,4 +1,4 @@
-#include "access/AccessPolicy.h"
+#include "model/access/AccessPolicy.h"
 
 #include <QStringList>
 #include <array>

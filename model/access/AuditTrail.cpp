@@ -1,7 +1,7 @@
-#include "access/AuditTrail.h"
+#include "model/access/AuditTrail.h"
 
-#include "ModelLog.h"
-#include "eol/ResultDatabase.h"
+#include "model/ModelLog.h"
+#include "model/eol/ResultDatabase.h"
 
 #include <QSqlError>
 #include <QSqlQuery>

@@ -1,4 +1,4 @@
-#include "access/PasswordHash.h"
+#include "model/access/PasswordHash.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>

@@ -1,7 +1,7 @@
-#include "access/RecipeApprovals.h"
+#include "model/access/RecipeApprovals.h"
 
-#include "eol/ResultDatabase.h"
-#include "eol/UnitRecordJson.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QSqlError>
 #include <QSqlQuery>

@@ -1,6 +1,6 @@
-#include "access/StationAccess.h"
+#include "model/access/StationAccess.h"
 
-#include "eol/ResultWriter.h"
+#include "model/eol/ResultWriter.h"
 
 #include <QSettings>
 #include <memory>

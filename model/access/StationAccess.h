@@ -1,7 +1,7 @@
 #pragma once
 
-#include "access/AccessCheck.h"
-#include "access/RecipeApprovals.h"
+#include "model/access/AccessCheck.h"
+#include "model/access/RecipeApprovals.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,7 +1,7 @@
-#include "access/UserStore.h"
+#include "model/access/UserStore.h"
 
-#include "eol/ResultDatabase.h"
-#include "eol/UnitRecordJson.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QRegularExpression>
 #include <QSqlError>

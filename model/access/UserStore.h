@@ -1,7 +1,7 @@
 #pragma once
 
-#include "access/AccessPolicy.h"
-#include "access/PasswordHash.h"
+#include "model/access/AccessPolicy.h"
+#include "model/access/PasswordHash.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "alarms/AlarmRecords.h"
-#include "profile/CodeTable.h"
-#include "session/DeviceSession.h"
+#include "model/alarms/AlarmRecords.h"
+#include "model/profile/CodeTable.h"
+#include "model/session/DeviceSession.h"
 
 #include <QObject>
 #include <QStringList>

@@ -1,9 +1,9 @@
-#include "alarms/AlarmRecords.h"
+#include "model/alarms/AlarmRecords.h"
 
-#include "profile/ParamValue.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ParamValue.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 namespace opentop {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "profile/CodeTable.h"
+#include "model/profile/CodeTable.h"
 
 #include <QCoreApplication>
 #include <QHash>

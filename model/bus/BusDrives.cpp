@@ -1,11 +1,11 @@
-#include "bus/BusDrives.h"
+#include "model/bus/BusDrives.h"
 
-#include "ModbusClient.h"
-#include "bus/DriveName.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
-#include "session/StoreTracker.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/StoreTracker.h"
+#include "transport/ModbusClient.h"
 
 #include <algorithm>
 #include <memory>

@@ -1,8 +1,8 @@
-#include "bus/BusGroupTracker.h"
+#include "model/bus/BusGroupTracker.h"
 
-#include "bus/BusDrives.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
 
 #include <memory>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "bus/BusGroups.h"
-#include "session/GroupReach.h"
+#include "model/bus/BusGroups.h"
+#include "model/session/GroupReach.h"
 
 #include <QObject>
 #include <QSet>

@@ -1,7 +1,7 @@
-#include "BusGroups.h"
+#include "model/bus/BusGroups.h"
 
-#include "bus/DriveName.h"
-#include "profile/Profile.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/Profile.h"
 
 #include <QCoreApplication>
 #include <algorithm>

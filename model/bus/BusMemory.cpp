@@ -1,9 +1,9 @@
-#include "bus/BusMemory.h"
+#include "model/bus/BusMemory.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveName.h"
-#include "session/DeviceSession.h"
-#include "session/StoreTracker.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveName.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/StoreTracker.h"
 
 #include <QCoreApplication>
 #include <QSettings>

@@ -1,9 +1,9 @@
-#include "bus/BusScanner.h"
+#include "model/bus/BusScanner.h"
 
-#include "ModbusClient.h"
-#include "ModelLog.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceIdentifier.h"
+#include "model/ModelLog.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceIdentifier.h"
+#include "transport/ModbusClient.h"
 
 #include <algorithm>
 #include <cmath>

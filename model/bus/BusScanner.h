@@ -1,7 +1,7 @@
 #pragma once
 
-#include "LineFormat.h"
-#include "session/DeviceInfo.h"
+#include "model/session/DeviceInfo.h"
+#include "transport/LineFormat.h"
 
 #include <QElapsedTimer>
 #include <QHash>

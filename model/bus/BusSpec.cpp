@@ -1,6 +1,6 @@
-#include "bus/BusSpec.h"
+#include "model/bus/BusSpec.h"
 
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 #include <QSet>

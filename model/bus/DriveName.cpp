@@ -1,6 +1,6 @@
-#include "bus/DriveName.h"
+#include "model/bus/DriveName.h"
 
-#include "session/DeviceSession.h"
+#include "model/session/DeviceSession.h"
 
 #include <QRegularExpression>
 

@@ -1,10 +1,10 @@
-#include "bus/DriveStatusPoller.h"
+#include "model/bus/DriveStatusPoller.h"
 
-#include "ModbusClient.h"
-#include "bus/BusDrives.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QDateTime>
 #include <algorithm>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "monitor/Freshness.h"
-#include "profile/CodeTable.h"
-#include "profile/Profile.h"
+#include "model/profile/CodeTable.h"
+#include "model/profile/Profile.h"
+#include "model/session/Freshness.h"
 
 #include <QDateTime>
 #include <QHash>

@@ -1,4 +1,4 @@
-#include "bus/FixedLineHint.h"
+#include "model/bus/FixedLineHint.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ConnectionSettings.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QString>
 

@@ -1,4 +1,4 @@
-#include "bus/GroupPlan.h"
+#include "model/bus/GroupPlan.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/BusGroups.h"
+#include "model/bus/BusGroups.h"
 
 #include <QHash>
 #include <optional>

@@ -1,7 +1,7 @@
-#include "bus/LineFormatHint.h"
+#include "model/bus/LineFormatHint.h"
 
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceInfo.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceInfo.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

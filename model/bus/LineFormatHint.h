@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "LineFormat.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/LineFormat.h"
 
 #include <QString>
 #include <QStringList>

@@ -1,9 +1,9 @@
-#include "bus/VariantNeed.h"
+#include "model/bus/VariantNeed.h"
 
-#include "bus/BusDrives.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <QMap>
 

@@ -1,4 +1,4 @@
-#include "eol/CertificateHtml.h"
+#include "model/eol/CertificateHtml.h"
 
 namespace opentop {
 

@@ -1,9 +1,9 @@
-#include "eol/CommLossArm.h"
+#include "model/eol/CommLossArm.h"
 
-#include "ModelLog.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/ModelLog.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 namespace opentop {
 

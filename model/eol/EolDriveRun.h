@@ -1,10 +1,10 @@
 #pragma once
 
-#include "eol/EolStepRunner.h"
-#include "eol/RecipeTypes.h"
-#include "eol/UnitRecord.h"
-#include "eol/VariantDecision.h"
-#include "files/BackupDevice.h"
+#include "model/eol/EolStepRunner.h"
+#include "model/eol/RecipeTypes.h"
+#include "model/eol/UnitRecord.h"
+#include "model/eol/VariantDecision.h"
+#include "model/files/BackupDevice.h"
 
 #include <QHash>
 #include <QObject>

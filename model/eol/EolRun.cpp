@@ -1,11 +1,11 @@
-#include "eol/EolRun.h"
+#include "model/eol/EolRun.h"
 
-#include "ModelLog.h"
-#include "TrafficLog.h"
-#include "eol/RecipeChecker.h"
-#include "eol/ResultWriter.h"
-#include "profile/ProfileRegistry.h"
-#include "run/RunControl.h"
+#include "model/ModelLog.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/eol/ResultWriter.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/run/RunControl.h"
+#include "transport/TrafficLog.h"
 
 #include <QDateTime>
 #include <QTimer>

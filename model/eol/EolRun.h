@@ -1,8 +1,8 @@
 #pragma once
 
-#include "eol/EolDriveRun.h"
-#include "eol/Recipe.h"
-#include "eol/UnitRecord.h"
+#include "model/eol/EolDriveRun.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/UnitRecord.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,11 +1,11 @@
-#include "eol/EolStepRunner.h"
+#include "model/eol/EolStepRunner.h"
 
-#include "ModelLog.h"
-#include "eol/Recipe.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "run/RunControl.h"
-#include "session/DeviceSession.h"
+#include "model/ModelLog.h"
+#include "model/eol/Recipe.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/run/RunControl.h"
+#include "model/session/DeviceSession.h"
 
 #include <QTimer>
 #include <algorithm>

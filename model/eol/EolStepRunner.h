@@ -1,8 +1,8 @@
 #pragma once
 
-#include "eol/RecipeTypes.h"
-#include "eol/UnitRecord.h"
-#include "run/StopConfirmer.h"
+#include "model/eol/RecipeTypes.h"
+#include "model/eol/UnitRecord.h"
+#include "model/run/StopConfirmer.h"
 
 #include <QElapsedTimer>
 #include <QHash>

@@ -1,8 +1,8 @@
-#include "eol/EolTarget.h"
+#include "model/eol/EolTarget.h"
 
-#include "eol/RecipeChecker.h"
-#include "profile/Profile.h"
-#include "profile/ValueCodec.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueCodec.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/RecipeTypes.h"
-#include "files/BackupDevice.h"
+#include "model/eol/RecipeTypes.h"
+#include "model/files/BackupDevice.h"
 
 #include <QCoreApplication>
 #include <QHash>

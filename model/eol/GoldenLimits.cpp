@@ -1,7 +1,7 @@
-#include "eol/GoldenLimits.h"
+#include "model/eol/GoldenLimits.h"
 
-#include "eol/RecipeChecker.h"
-#include "profile/ProfileRegistry.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QLocale>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/Recipe.h"
-#include "eol/UnitRecord.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/UnitRecord.h"
 
 #include <QCoreApplication>
 #include <optional>

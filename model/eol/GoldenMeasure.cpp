@@ -1,4 +1,4 @@
-#include "eol/GoldenMeasure.h"
+#include "model/eol/GoldenMeasure.h"
 
 #include <cmath>
 

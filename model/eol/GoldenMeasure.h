@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/EolRun.h"
-#include "eol/GoldenLimits.h"
+#include "model/eol/EolRun.h"
+#include "model/eol/GoldenLimits.h"
 
 #include <QCoreApplication>
 #include <QObject>

@@ -1,24 +1,8 @@
-#include "eol/Recipe.h"
+#include "model/eol/Recipe.h"
+
+#include "model/eol/RecipeStepKinds.h"
 
 namespace opentop {
-
-namespace {
-
-struct StepName
-{
-    RecipeStep::Type type;
-    const char* name;
-};
-
-constexpr StepName kStepNames[] = {
-    {RecipeStep::Type::Priority, "priority"},   {RecipeStep::Type::Select, "select"},
-    {RecipeStep::Type::Speed, "speed"},         {RecipeStep::Type::Start, "start"},
-    {RecipeStep::Type::WaitSpeed, "waitSpeed"}, {RecipeStep::Type::Hold, "hold"},
-    {RecipeStep::Type::NoAlarm, "noAlarm"},     {RecipeStep::Type::Stop, "stop"},
-    {RecipeStep::Type::Read, "read"},
-};
-
-} // namespace
 
 const RecipePosition* Recipe::position(int machineNumber) const
 {
@@ -31,53 +15,27 @@ const RecipePosition* Recipe::position(int machineNumber) const
 
 QString Recipe::stepTypeName(RecipeStep::Type type)
 {
-    for (const StepName& s : kStepNames) {
-        if (s.type == type)
-            return QString::fromLatin1(s.name);
-    }
-    return {};
+    const RecipeStepKinds::Kind* k = RecipeStepKinds::of(type);
+    return k ? QString::fromLatin1(k->name) : QString();
 }
 
 std::optional<RecipeStep::Type> Recipe::stepTypeFromName(const QString& name)
 {
-    for (const StepName& s : kStepNames) {
-        if (name == QLatin1String(s.name))
-            return s.type;
-    }
-    return std::nullopt;
+    const RecipeStepKinds::Kind* k = RecipeStepKinds::of(name);
+    return k ? std::optional<RecipeStep::Type>(k->type) : std::nullopt;
 }
 
 QStringList Recipe::stepTypeNames()
 {
     QStringList names;
-    for (const StepName& s : kStepNames)
-        names << QString::fromLatin1(s.name);
+    for (const RecipeStepKinds::Kind& k : RecipeStepKinds::all())
+        names << QString::fromLatin1(k.name);
     return names;
 }
 
 QString Recipe::stepTitle(RecipeStep::Type type)
 {
-    switch (type) {
-    case RecipeStep::Type::Priority:
-        return tr("take communication priority");
-    case RecipeStep::Type::Select:
-        return tr("select running data");
-    case RecipeStep::Type::Speed:
-        return tr("set the speed command");
-    case RecipeStep::Type::Start:
-        return tr("start");
-    case RecipeStep::Type::WaitSpeed:
-        return tr("wait for speed");
-    case RecipeStep::Type::Hold:
-        return tr("hold and measure");
-    case RecipeStep::Type::NoAlarm:
-        return tr("check for alarms and warnings");
-    case RecipeStep::Type::Stop:
-        return tr("stop");
-    case RecipeStep::Type::Read:
-        return tr("read and compare");
-    }
-    return {};
+    return RecipeStepKinds::title(type);
 }
 
 QString Recipe::sourceName(RecipeUnitValue::Source source)

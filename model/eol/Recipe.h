@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eol/RecipeTypes.h"
+#include "model/eol/RecipeTypes.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,10 +1,10 @@
-#include "eol/RecipeBuilder.h"
+#include "model/eol/RecipeBuilder.h"
 
-#include "eol/RecipeChecker.h"
-#include "files/BackupFile.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
-#include "run/RunningData.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/RunningData.h"
+#include "model/profile/ValueCodec.h"
 
 #include <cmath>
 

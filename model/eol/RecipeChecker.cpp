@@ -1,9 +1,9 @@
-#include "eol/RecipeChecker.h"
+#include "model/eol/RecipeChecker.h"
 
-#include "eol/RecipeStepChecker.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
-#include "session/DependentValues.h"
+#include "model/eol/RecipeStepChecker.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DependentValues.h"
 
 #include <QHash>
 #include <QRegularExpression>

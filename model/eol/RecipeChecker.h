@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/Recipe.h"
-#include "profile/ValueContext.h"
+#include "model/eol/Recipe.h"
+#include "model/profile/ValueContext.h"
 
 #include <QCoreApplication>
 #include <QVector>

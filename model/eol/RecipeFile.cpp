@@ -1,9 +1,9 @@
-#include "eol/RecipeFile.h"
-#include "files/InputFile.h"
+#include "model/eol/RecipeFile.h"
+#include "model/io/InputFile.h"
 
-#include "eol/RecipeParser.h"
-#include "files/BackupFile.h"
-#include "files/OutputFile.h"
+#include "model/eol/RecipeParser.h"
+#include "model/files/BackupFile.h"
+#include "model/io/OutputFile.h"
 
 #include <QFile>
 #include <QJsonArray>

@@ -1,7 +1,9 @@
-#include "eol/RecipeParser.h"
+#include "model/eol/RecipeParser.h"
 
-#include "eol/RecipeFile.h"
-#include "files/BackupFile.h"
+#include "model/eol/RecipeStepKinds.h"
+
+#include "model/eol/RecipeFile.h"
+#include "model/files/BackupFile.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -209,42 +211,42 @@ bool RecipeParser::readStep(const QJsonObject& o, const QString& at, RecipeStep*
                         .arg(at, type, Recipe::stepTypeNames().join(QStringLiteral(", "))));
     step->type = *t;
     const QString where = tr("%1 (%2)").arg(at, Recipe::stepTitle(step->type));
-    const QString k = QStringLiteral("type");
+    // The keys each type may hold: the step table's (RecipeStepKinds).
+    const QStringList keys = RecipeStepKinds::keys(step->type);
     switch (step->type) {
     case RecipeStep::Type::Priority:
     case RecipeStep::Type::NoAlarm:
-        return onlyKeys(o, where, {k});
+        return onlyKeys(o, where, keys);
     case RecipeStep::Type::Select: {
         double spno = 0;
-        if (!onlyKeys(o, where, {k, QStringLiteral("spno")}) || !number(o, "spno", where, &spno))
+        if (!onlyKeys(o, where, keys) || !number(o, "spno", where, &spno))
             return false;
-        if (spno != std::floor(spno) || spno < 1 || spno > 99)
+        const RecipeStepKinds::Field& range = RecipeStepKinds::of(step->type)->fields.first();
+        if (spno != std::floor(spno) || spno < range.min || spno > range.max)
             return fail(tr("%1: \"spno\" must be a running data number such as 2").arg(where));
         step->spno = int(spno);
         return true;
     }
     case RecipeStep::Type::Speed:
-        return onlyKeys(o, where, {k, QStringLiteral("speed"), QStringLiteral("unit")}) &&
+        return onlyKeys(o, where, keys) &&
                number(o, "speed", where, &step->speed) &&
                text(o, "unit", where, &step->unit, false);
     case RecipeStep::Type::Start:
-        if (!onlyKeys(o, where, {k, QStringLiteral("direction")}) ||
+        if (!onlyKeys(o, where, keys) ||
             !text(o, "direction", where, &step->direction, true))
             return false;
         if (step->direction != QLatin1String("cw") && step->direction != QLatin1String("ccw"))
             return fail(tr("%1: \"direction\" must be \"cw\" or \"ccw\"").arg(where));
         return true;
     case RecipeStep::Type::WaitSpeed:
-        return onlyKeys(o, where,
-                        {k, QStringLiteral("target"), QStringLiteral("tolerance"),
-                         QStringLiteral("unit"), QStringLiteral("timeout")}) &&
+        return onlyKeys(o, where, keys) &&
                optionalNumber(o, "target", where, &step->target) &&
                number(o, "tolerance", where, &step->tolerance) &&
                text(o, "unit", where, &step->unit, false) &&
                number(o, "timeout", where, &step->timeout);
     case RecipeStep::Type::Hold: {
         QJsonArray limits;
-        if (!onlyKeys(o, where, {k, QStringLiteral("duration"), QStringLiteral("limits")}) ||
+        if (!onlyKeys(o, where, keys) ||
             !number(o, "duration", where, &step->duration) || !array(o, "limits", where, &limits))
             return false;
         for (int i = 0; i < limits.size(); ++i) {
@@ -257,14 +259,12 @@ bool RecipeParser::readStep(const QJsonObject& o, const QString& at, RecipeStep*
         return true;
     }
     case RecipeStep::Type::Stop:
-        return onlyKeys(o, where, {k, QStringLiteral("deceleration"), QStringLiteral("margin")}) &&
+        return onlyKeys(o, where, keys) &&
                optionalNumber(o, "deceleration", where, &step->deceleration) &&
                number(o, "margin", where, &step->margin);
     case RecipeStep::Type::Read: {
         RecipeLimit l;
-        if (!onlyKeys(o, where,
-                      {k, QStringLiteral("parameter"), QStringLiteral("equals"),
-                       QStringLiteral("lower"), QStringLiteral("upper"), QStringLiteral("unit")}) ||
+        if (!onlyKeys(o, where, keys) ||
             !text(o, "parameter", where, &l.parameter, true) ||
             !text(o, "equals", where, &step->equals, false))
             return false;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eol/Recipe.h"
+#include "model/eol/Recipe.h"
 
 #include <QCoreApplication>
 #include <QJsonObject>

@@ -1,7 +1,7 @@
-#include "eol/RecipeStepChecker.h"
+#include "model/eol/RecipeStepChecker.h"
 
-#include "profile/Profile.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueCodec.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
-#include "eol/ResultCsv.h"
+#include "model/eol/ResultCsv.h"
 
-#include "eol/UnitRecordJson.h"
-#include "files/OutputFile.h"
+#include "model/eol/UnitRecordJson.h"
+#include "model/io/OutputFile.h"
 
 namespace opentop {
 

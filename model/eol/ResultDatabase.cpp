@@ -1,7 +1,7 @@
-#include "eol/ResultDatabase.h"
+#include "model/eol/ResultDatabase.h"
 
-#include "ModelLog.h"
-#include "eol/ResultSchema.h"
+#include "model/ModelLog.h"
+#include "model/eol/ResultSchema.h"
 
 #include <QElapsedTimer>
 #include <QSqlError>

@@ -1,7 +1,7 @@
-#include "eol/ResultQueries.h"
+#include "model/eol/ResultQueries.h"
 
-#include "eol/ResultDatabase.h"
-#include "eol/UnitRecordJson.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QSqlError>
 #include <QSqlQuery>

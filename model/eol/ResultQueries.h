@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/UnitRecord.h"
-#include "eol/YieldReport.h"
+#include "model/eol/UnitRecord.h"
+#include "model/eol/YieldReport.h"
 
 #include <QCoreApplication>
 #include <QPair>

@@ -1,7 +1,7 @@
-#include "eol/ResultSchema.h"
+#include "model/eol/ResultSchema.h"
 
-#include "ModelLog.h"
-#include "eol/UnitRecordJson.h"
+#include "model/ModelLog.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QSqlError>
 #include <QSqlQuery>

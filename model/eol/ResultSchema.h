@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eol/ResultUrl.h"
+#include "model/eol/ResultUrl.h"
 
 #include <QCoreApplication>
 #include <QSqlDatabase>

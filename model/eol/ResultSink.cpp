@@ -1,8 +1,8 @@
-#include "eol/ResultSink.h"
+#include "model/eol/ResultSink.h"
 
-#include "ModelLog.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
+#include "model/ModelLog.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultStore.h"
 
 #include <QCoreApplication>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "eol/ResultSpool.h"
-#include "eol/StationLease.h"
-#include "eol/UnitRecord.h"
+#include "model/eol/ResultSpool.h"
+#include "model/eol/StationLease.h"
+#include "model/eol/UnitRecord.h"
 
 #include <QCoreApplication>
 #include <memory>

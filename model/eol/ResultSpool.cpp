@@ -1,8 +1,8 @@
-#include "eol/ResultSpool.h"
+#include "model/eol/ResultSpool.h"
 
-#include "ModelLog.h"
-#include "eol/ResultUrl.h"
-#include "eol/UnitRecordJson.h"
+#include "model/ModelLog.h"
+#include "model/eol/ResultUrl.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QCryptographicHash>
 #include <QDir>

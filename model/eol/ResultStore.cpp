@@ -1,7 +1,7 @@
-#include "eol/ResultStore.h"
+#include "model/eol/ResultStore.h"
 
-#include "eol/ResultDatabase.h"
-#include "eol/UnitRecordJson.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QSqlError>
 #include <QSqlQuery>

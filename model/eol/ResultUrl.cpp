@@ -1,4 +1,4 @@
-#include "eol/ResultUrl.h"
+#include "model/eol/ResultUrl.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,7 +1,7 @@
-#include "eol/ResultWriter.h"
+#include "model/eol/ResultWriter.h"
 
-#include "ModelLog.h"
-#include "eol/ResultDatabase.h"
+#include "model/ModelLog.h"
+#include "model/eol/ResultDatabase.h"
 
 #include <QEventLoop>
 #include <QPointer>

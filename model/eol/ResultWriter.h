@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/ResultSink.h"
-#include "eol/UnitRecord.h"
+#include "model/eol/ResultSink.h"
+#include "model/eol/UnitRecord.h"
 
 #include <QCoreApplication>
 #include <QObject>

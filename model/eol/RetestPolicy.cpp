@@ -1,6 +1,6 @@
-#include "eol/RetestPolicy.h"
+#include "model/eol/RetestPolicy.h"
 
-#include "eol/ResultWriter.h"
+#include "model/eol/ResultWriter.h"
 
 #include <memory>
 

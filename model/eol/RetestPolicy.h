@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/RecipeTypes.h"
-#include "eol/ResultQueries.h"
+#include "model/eol/RecipeTypes.h"
+#include "model/eol/ResultQueries.h"
 
 #include <QCoreApplication>
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "eol/ShiftPlan.h"
+#include "model/eol/ShiftPlan.h"
 
 #include <QStringList>
 #include <algorithm>

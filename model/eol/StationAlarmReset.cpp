@@ -1,10 +1,10 @@
-#include "eol/StationAlarmReset.h"
+#include "model/eol/StationAlarmReset.h"
 
-#include "ModbusClient.h"
-#include "ModelLog.h"
-#include "alarms/AlarmHistory.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "model/ModelLog.h"
+#include "model/alarms/AlarmHistory.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QTimer>
 

@@ -1,9 +1,9 @@
-#include "eol/StationLease.h"
+#include "model/eol/StationLease.h"
 
-#include "ModelLog.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
-#include "eol/UnitRecordJson.h"
+#include "model/ModelLog.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QCoreApplication>
 #include <QSqlError>

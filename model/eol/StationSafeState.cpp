@@ -1,11 +1,11 @@
-#include "eol/StationSafeState.h"
+#include "model/eol/StationSafeState.h"
 
-#include "ModelLog.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "run/RunControl.h"
-#include "session/DeviceSession.h"
+#include "model/ModelLog.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/run/RunControl.h"
+#include "model/session/DeviceSession.h"
 
 #include <QElapsedTimer>
 #include <QTimer>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/Recipe.h"
-#include "run/StopConfirmer.h"
+#include "model/eol/Recipe.h"
+#include "model/run/StopConfirmer.h"
 
 #include <QCoreApplication>
 #include <QObject>

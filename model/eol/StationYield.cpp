@@ -1,7 +1,7 @@
-#include "eol/StationYield.h"
+#include "model/eol/StationYield.h"
 
-#include "eol/ResultQueries.h"
-#include "eol/ResultWriter.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultWriter.h"
 
 #include <QSettings>
 #include <QTimeZone>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/ShiftPlan.h"
-#include "eol/YieldReport.h"
+#include "model/eol/ShiftPlan.h"
+#include "model/eol/YieldReport.h"
 
 #include <QDateTime>
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "eol/UnitRecord.h"
+#include "model/eol/UnitRecord.h"
 
 namespace opentop {
 

@@ -1,4 +1,4 @@
-#include "eol/UnitRecordJson.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,8 +1,8 @@
-#include "eol/UnitValuesCsv.h"
-#include "files/InputFile.h"
+#include "model/eol/UnitValuesCsv.h"
+#include "model/io/InputFile.h"
 
-#include "eol/Recipe.h"
-#include "eol/RecipeChecker.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/RecipeChecker.h"
 
 #include <QFile>
 #include <QLocale>

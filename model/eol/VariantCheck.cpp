@@ -1,4 +1,4 @@
-#include "eol/VariantCheck.h"
+#include "model/eol/VariantCheck.h"
 
 #include <QTimer>
 

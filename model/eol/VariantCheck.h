@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eol/VariantDecision.h"
+#include "model/eol/VariantDecision.h"
 
 #include <QObject>
 #include <functional>

@@ -1,6 +1,6 @@
-#include "eol/VariantDecision.h"
+#include "model/eol/VariantDecision.h"
 
-#include "profile/Profile.h"
+#include "model/profile/Profile.h"
 
 namespace opentop {
 

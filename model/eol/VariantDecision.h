@@ -1,8 +1,8 @@
 #pragma once
 
-#include "eol/RecipeTypes.h"
-#include "eol/UnitRecord.h"
-#include "session/VariantProber.h"
+#include "model/eol/RecipeTypes.h"
+#include "model/eol/UnitRecord.h"
+#include "model/session/VariantProber.h"
 
 #include <QCoreApplication>
 #include <optional>

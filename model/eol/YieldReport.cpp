@@ -1,6 +1,6 @@
-#include "eol/YieldReport.h"
+#include "model/eol/YieldReport.h"
 
-#include "eol/ResultQueries.h"
+#include "model/eol/ResultQueries.h"
 
 #include <algorithm>
 #include <map>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "eol/ShiftPlan.h"
-#include "eol/UnitRecord.h"
+#include "model/eol/ShiftPlan.h"
+#include "model/eol/UnitRecord.h"
 
 #include <QCoreApplication>
 #include <QHash>

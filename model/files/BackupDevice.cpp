@@ -1,7 +1,7 @@
-#include "files/BackupDevice.h"
+#include "model/files/BackupDevice.h"
 
-#include "bus/DriveName.h"
-#include "profile/ValueCodec.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QCoreApplication>
 #include <QHash>

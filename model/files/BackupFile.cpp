@@ -1,10 +1,10 @@
-#include "files/BackupFile.h"
-#include "files/InputFile.h"
-#include "files/OutputFile.h"
+#include "model/files/BackupFile.h"
+#include "model/io/InputFile.h"
+#include "model/io/OutputFile.h"
 
-#include "files/BackupFileParser.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "model/files/BackupFileParser.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QCryptographicHash>
 #include <QFile>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "files/BackupDevice.h"
+#include "model/files/BackupDevice.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -1,9 +1,9 @@
-#include "files/BackupFileParser.h"
+#include "model/files/BackupFileParser.h"
 
-#include "bus/DriveName.h"
-#include "files/BackupValidator.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "model/bus/DriveName.h"
+#include "model/files/BackupValidator.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

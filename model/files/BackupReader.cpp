@@ -1,7 +1,7 @@
-#include "files/BackupReader.h"
+#include "model/files/BackupReader.h"
 
-#include "files/BackupValidator.h"
-#include "session/DeviceSession.h"
+#include "model/files/BackupValidator.h"
+#include "model/session/DeviceSession.h"
 
 #include <QElapsedTimer>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "files/BackupDevice.h"
+#include "model/files/BackupDevice.h"
 
 #include <QObject>
 #include <QStringList>

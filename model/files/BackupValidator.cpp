@@ -1,6 +1,6 @@
-#include "files/BackupValidator.h"
+#include "model/files/BackupValidator.h"
 
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QSet>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "files/BackupDevice.h"
-#include "profile/Profile.h"
+#include "model/files/BackupDevice.h"
+#include "model/profile/Profile.h"
 
 #include <QCoreApplication>
 #include <QStringList>

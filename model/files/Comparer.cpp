@@ -1,7 +1,7 @@
-#include "files/Comparer.h"
+#include "model/files/Comparer.h"
 
-#include "files/BackupReader.h"
-#include "profile/ValueCodec.h"
+#include "model/files/BackupReader.h"
+#include "model/profile/ValueCodec.h"
 
 #include <algorithm>
 

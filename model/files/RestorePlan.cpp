@@ -1,8 +1,9 @@
-#include "files/RestorePlan.h"
+#include "model/files/RestorePlan.h"
 
-#include "files/BackupValidator.h"
-#include "profile/ValueCodec.h"
-#include "session/SerialLock.h"
+#include "model/files/BackupValidator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/profile/WriteOrder.h"
+#include "model/session/SerialLock.h"
 
 #include <QSet>
 #include <algorithm>
@@ -106,21 +107,10 @@ RestorePlan RestorePlan::check(const Profile& profile, const QString& liveVarian
         }
     }
     QStringList order;
-    for (bool progress = true; progress;) {
-        progress = false;
-        for (const BackupParameter& p : file.parameters) {
-            const ParameterMeta* meta = profile.parameter(p.name);
-            if (!meta || !controlling.contains(p.name) || order.contains(p.name))
-                continue;
-            const QStringList before = meta->controllingParameters();
-            if (std::all_of(before.begin(), before.end(), [&](const QString& c) {
-                    return order.contains(c) || !controlling.contains(c);
-                })) {
-                order << p.name;
-                progress = true;
-            }
-        }
-    }
+    for (const BackupParameter& p : file.parameters)
+        if (controlling.contains(p.name) && profile.parameter(p.name))
+            order << p.name;
+    order = WriteOrder::of(profile, order);
     QStringList ordinary, communication;
     for (const BackupParameter& p : file.parameters) {
         const ParameterMeta* meta = profile.parameter(p.name);

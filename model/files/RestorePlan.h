@@ -1,7 +1,7 @@
 #pragma once
 
-#include "files/BackupDevice.h"
-#include "profile/ValueContext.h"
+#include "model/files/BackupDevice.h"
+#include "model/profile/ValueContext.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -66,6 +66,7 @@ public:
     QString title;       // the file's drive: "drive 1 (DBU200-D)"
     QString machineName; // the name of the machine restored to (DriveName), empty: none
     Outcome outcome = Outcome::Planned;
+    bool attempted = true;   // false: the bus failed or the user stopped before this drive
     QString reason;          // for a refusal or failure, for people
     bool deviceRead = false; // build() ran: the drive's values are known and compared
     QStringList problems;    // every value that may not be written (a refusal)

@@ -1,9 +1,9 @@
-#include "files/Restorer.h"
+#include "model/files/Restorer.h"
 
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
-#include "session/ReachedDrives.h"
-#include "session/StoreTracker.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/ReachedDrives.h"
+#include "model/session/StoreTracker.h"
 
 #include <algorithm>
 

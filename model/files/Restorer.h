@@ -1,7 +1,7 @@
 #pragma once
 
-#include "files/BackupDevice.h"
-#include "files/RestorePlan.h"
+#include "model/files/BackupDevice.h"
+#include "model/files/RestorePlan.h"
 
 #include <QObject>
 #include <functional>

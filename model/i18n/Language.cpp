@@ -1,8 +1,8 @@
-#include "i18n/Language.h"
+#include "model/i18n/Language.h"
 
-#include "ModelLog.h"
-#include "i18n/NamespaceTranslator.h"
-#include "profile/ProfileRegistry.h"
+#include "model/ModelLog.h"
+#include "model/i18n/NamespaceTranslator.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QFile>
 #include <QLibraryInfo>

@@ -1,4 +1,4 @@
-#include "i18n/NamespaceTranslator.h"
+#include "model/i18n/NamespaceTranslator.h"
 
 #include <cstring>
 

@@ -1,9 +1,9 @@
-#include "monitor/DeviceMonitor.h"
+#include "model/monitor/DeviceMonitor.h"
 
-#include "ModbusClient.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QPointer>
 

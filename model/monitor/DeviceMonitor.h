@@ -1,8 +1,8 @@
 #pragma once
 
-#include "profile/CodeTable.h"
-#include "profile/ParamValue.h"
-#include "profile/SpeedDisplay.h"
+#include "model/profile/CodeTable.h"
+#include "model/profile/ParamValue.h"
+#include "model/profile/SpeedDisplay.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>

@@ -1,4 +1,4 @@
-#include "monitor/LocalTimeZone.h"
+#include "model/monitor/LocalTimeZone.h"
 
 #include <QByteArray>
 #include <QtGlobal>

@@ -1,9 +1,9 @@
-#include "monitor/MonitorHub.h"
+#include "model/monitor/MonitorHub.h"
 
-#include "ModbusClient.h"
-#include "ModelLog.h"
-#include "bus/BusDrives.h"
-#include "session/DeviceSession.h"
+#include "model/ModelLog.h"
+#include "model/bus/BusDrives.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <algorithm>
 

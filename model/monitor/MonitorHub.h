@@ -1,8 +1,8 @@
 #pragma once
 
-#include "monitor/DeviceMonitor.h"
-#include "monitor/Freshness.h"
-#include "monitor/TrendHistory.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/monitor/TrendHistory.h"
+#include "model/session/Freshness.h"
 
 #include <QHash>
 #include <QObject>

@@ -1,10 +1,10 @@
-#include "monitor/PanelMirror.h"
+#include "model/monitor/PanelMirror.h"
 
-#include "monitor/DeviceMonitor.h"
-#include "profile/Profile.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/SpeedDisplay.h"
-#include "run/RunningData.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/profile/Profile.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/RunningData.h"
+#include "model/profile/SpeedDisplay.h"
 
 namespace opentop {
 

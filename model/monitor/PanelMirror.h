@@ -1,6 +1,6 @@
 #pragma once
 
-#include "profile/SpeedDisplay.h"
+#include "model/profile/SpeedDisplay.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,6 +1,6 @@
-#include "monitor/TrendCsv.h"
+#include "model/monitor/TrendCsv.h"
 
-#include "files/OutputFile.h"
+#include "model/io/OutputFile.h"
 
 #include <QDateTime>
 #include <limits>

@@ -1,7 +1,7 @@
-#include "monitor/TrendHistory.h"
+#include "model/monitor/TrendHistory.h"
 
-#include "monitor/DeviceMonitor.h"
-#include "profile/ParameterMeta.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/profile/ParameterMeta.h"
 
 #include <algorithm>
 

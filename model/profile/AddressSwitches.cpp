@@ -1,6 +1,6 @@
-#include "profile/AddressSwitches.h"
+#include "model/profile/AddressSwitches.h"
 
-#include "profile/JsonReader.h"
+#include "model/profile/JsonReader.h"
 
 namespace opentop {
 

@@ -1,4 +1,4 @@
-#include "profile/CodeTable.h"
+#include "model/profile/CodeTable.h"
 
 #include <QCoreApplication>
 

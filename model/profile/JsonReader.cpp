@@ -1,4 +1,4 @@
-#include "profile/JsonReader.h"
+#include "model/profile/JsonReader.h"
 
 #include <QCoreApplication>
 #include <QStringList>

@@ -1,6 +1,6 @@
-#include "profile/ParameterMeta.h"
+#include "model/profile/ParameterMeta.h"
 
-#include "profile/ValueContext.h"
+#include "model/profile/ValueContext.h"
 
 #include <algorithm>
 #include <cmath>

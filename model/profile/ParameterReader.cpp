@@ -1,6 +1,6 @@
-#include "profile/ParameterReader.h"
+#include "model/profile/ParameterReader.h"
 
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

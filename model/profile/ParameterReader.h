@@ -1,8 +1,8 @@
 #pragma once
 
-#include "profile/JsonReader.h"
-#include "profile/ParameterMeta.h"
-#include "profile/Profile.h"
+#include "model/profile/JsonReader.h"
+#include "model/profile/ParameterMeta.h"
+#include "model/profile/Profile.h"
 
 #include <QJsonObject>
 

@@ -1,4 +1,4 @@
-#include "profile/Profile.h"
+#include "model/profile/Profile.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "profile/AddressSwitches.h"
-#include "profile/CodeTable.h"
-#include "profile/ParameterMeta.h"
+#include "model/profile/AddressSwitches.h"
+#include "model/profile/CodeTable.h"
+#include "model/profile/ParameterMeta.h"
 
 #include <QHash>
 #include <QJsonObject>

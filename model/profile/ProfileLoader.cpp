@@ -1,10 +1,10 @@
-#include "profile/ProfileLoader.h"
+#include "model/profile/ProfileLoader.h"
 
-#include "LineFormat.h"
-#include "profile/JsonReader.h"
-#include "profile/ParameterReader.h"
-#include "profile/SettingReference.h"
-#include "profile/VariantProbe.h"
+#include "model/profile/JsonReader.h"
+#include "model/profile/ParameterReader.h"
+#include "model/profile/SettingReference.h"
+#include "model/profile/VariantProbe.h"
+#include "transport/LineFormat.h"
 
 #include <QCoreApplication>
 #include <QFile>

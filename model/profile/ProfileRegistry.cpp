@@ -1,9 +1,9 @@
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileRegistry.h"
 
-#include "ModelLog.h"
-#include "i18n/ProfileTranslation.h"
-#include "profile/ProfileLoader.h"
-#include "profile/SettingReference.h"
+#include "model/ModelLog.h"
+#include "model/profile/ProfileLoader.h"
+#include "model/profile/ProfileTranslation.h"
+#include "model/profile/SettingReference.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,6 +1,6 @@
-#include "profile/RoleEvaluator.h"
+#include "model/profile/RoleEvaluator.h"
 
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
 
 namespace opentop {
 

@@ -1,7 +1,7 @@
-#include "profile/SettingReference.h"
+#include "model/profile/SettingReference.h"
 
-#include "i18n/ProfileTexts.h"
-#include "profile/Profile.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ProfileTexts.h"
 
 #include <QRegularExpression>
 

@@ -1,7 +1,7 @@
-#include "profile/SpeedDisplay.h"
+#include "model/profile/SpeedDisplay.h"
 
-#include "profile/Profile.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueCodec.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

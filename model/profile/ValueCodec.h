@@ -1,8 +1,8 @@
 #pragma once
 
-#include "profile/ParamValue.h"
-#include "profile/ParameterMeta.h"
-#include "profile/ValueContext.h"
+#include "model/profile/ParamValue.h"
+#include "model/profile/ParameterMeta.h"
+#include "model/profile/ValueContext.h"
 
 #include <QString>
 #include <QVector>

@@ -1,7 +1,7 @@
-#include "profile/VariantProbe.h"
+#include "model/profile/VariantProbe.h"
 
-#include "profile/Profile.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QJsonValue>
 

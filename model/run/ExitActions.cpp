@@ -1,10 +1,10 @@
-#include "run/ExitActions.h"
+#include "model/run/ExitActions.h"
 
-#include "bus/BusDrives.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/RoleEvaluator.h"
-#include "run/StopAll.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/run/StopAll.h"
+#include "model/session/DeviceSession.h"
 
 #include <QPointer>
 

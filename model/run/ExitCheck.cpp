@@ -1,9 +1,9 @@
-#include "run/ExitCheck.h"
+#include "model/run/ExitCheck.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveName.h"
-#include "bus/DriveStatusPoller.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveName.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/session/DeviceSession.h"
 
 namespace opentop {
 

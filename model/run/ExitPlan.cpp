@@ -1,4 +1,4 @@
-#include "run/ExitPlan.h"
+#include "model/run/ExitPlan.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "run/ExitCheck.h"
+#include "model/run/ExitCheck.h"
 
 #include <QCoreApplication>
 #include <QStringList>

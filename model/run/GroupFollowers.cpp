@@ -1,10 +1,10 @@
-#include "run/GroupFollowers.h"
+#include "model/run/GroupFollowers.h"
 
-#include "bus/DriveName.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceRefusal.h"
-#include "session/DeviceSession.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceRefusal.h"
+#include "model/session/DeviceSession.h"
 
 #include <memory>
 

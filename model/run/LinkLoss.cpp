@@ -1,8 +1,8 @@
-#include "run/LinkLoss.h"
+#include "model/run/LinkLoss.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveStatusPoller.h"
-#include "monitor/Freshness.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/session/Freshness.h"
 
 #include <QLocale>
 #include <algorithm>

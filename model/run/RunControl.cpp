@@ -1,10 +1,10 @@
-#include "run/RunControl.h"
+#include "model/run/RunControl.h"
 
-#include "ModbusClient.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QTimer>
 #include <algorithm>

@@ -1,12 +1,12 @@
-#include "run/StartPreview.h"
+#include "model/run/StartPreview.h"
 
-#include "bus/BusDrives.h"
-#include "bus/BusGroups.h"
-#include "bus/DriveName.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "run/RunningData.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusGroups.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/RunningData.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <QPointer>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "run/GroupFollowers.h"
+#include "model/run/GroupFollowers.h"
 
 #include <QObject>
 #include <QStringList>

@@ -1,11 +1,11 @@
-#include "run/StopAll.h"
+#include "model/run/StopAll.h"
 
-#include "ModbusClient.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceIdentifier.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceIdentifier.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <algorithm>
 

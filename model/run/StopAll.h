@@ -1,6 +1,6 @@
 #pragma once
 
-#include "run/StopConfirmer.h"
+#include "model/run/StopConfirmer.h"
 
 #include <QObject>
 #include <QVector>

@@ -1,8 +1,8 @@
-#include "run/StopConfirmer.h"
+#include "model/run/StopConfirmer.h"
 
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <cmath>
 

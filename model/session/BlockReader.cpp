@@ -1,8 +1,8 @@
-#include "session/BlockReader.h"
+#include "model/session/BlockReader.h"
 
-#include "ModbusClient.h"
-#include "profile/ValueCodec.h"
-#include "session/ReadPlanner.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/ReadPlanner.h"
+#include "transport/ModbusClient.h"
 
 #include <utility>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/DeviceSession.h"
+#include "model/session/DeviceSession.h"
 
 #include <memory>
 

@@ -1,7 +1,7 @@
-#include "session/BlockWriter.h"
+#include "model/session/BlockWriter.h"
 
-#include "ModbusClient.h"
-#include "session/DeviceSession.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 namespace opentop {
 

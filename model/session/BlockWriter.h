@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ModbusRequest.h"
+#include "transport/ModbusRequest.h"
 
 #include <QVector>
 #include <functional>

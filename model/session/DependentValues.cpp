@@ -1,6 +1,6 @@
-#include "session/DependentValues.h"
+#include "model/session/DependentValues.h"
 
-#include "profile/ValueCodec.h"
+#include "model/profile/ValueCodec.h"
 
 namespace opentop {
 

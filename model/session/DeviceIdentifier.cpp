@@ -1,8 +1,8 @@
-#include "session/DeviceIdentifier.h"
+#include "model/session/DeviceIdentifier.h"
 
-#include "ModbusClient.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "transport/ModbusClient.h"
 
 #include <QRegularExpression>
 

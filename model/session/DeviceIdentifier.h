@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/DeviceInfo.h"
+#include "model/session/DeviceInfo.h"
 
 #include <QObject>
 #include <functional>

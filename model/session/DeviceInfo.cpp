@@ -1,6 +1,6 @@
-#include "session/DeviceInfo.h"
+#include "model/session/DeviceInfo.h"
 
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
 

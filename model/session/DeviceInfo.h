@@ -1,6 +1,6 @@
 #pragma once
 
-#include "LineFormat.h"
+#include "transport/LineFormat.h"
 
 #include <QMetaType>
 #include <QString>

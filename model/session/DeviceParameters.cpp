@@ -1,7 +1,8 @@
-#include "session/DeviceParameters.h"
+#include "model/session/DeviceParameters.h"
 
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ValueCodec.h"
+#include "model/profile/WriteOrder.h"
+#include "model/session/DeviceSession.h"
 
 #include <algorithm>
 
@@ -289,31 +290,6 @@ QString DeviceParameters::writeResultText(const QStringList& names, int failed, 
     return lines.join(QLatin1Char('\n'));
 }
 
-QStringList DeviceParameters::orderForWrite(QStringList names) const
-{
-    // A stable order in which every parameter comes after the ones it depends on.
-    QStringList ordered;
-    while (!names.isEmpty()) {
-        bool moved = false;
-        for (int i = 0; i < names.size(); ++i) {
-            const QStringList needs = m_entries.value(names[i]).meta->controllingParameters();
-            const bool ready = std::none_of(needs.begin(), needs.end(), [&names](const QString& n) {
-                return names.contains(n);
-            });
-            if (ready) {
-                ordered << names.takeAt(i);
-                moved = true;
-                break;
-            }
-        }
-        if (!moved) { // a cycle cannot happen in a valid profile; keep the rest as they are
-            ordered += names;
-            break;
-        }
-    }
-    return ordered;
-}
-
 void DeviceParameters::write(const QStringList& names, std::function<void(int failed)> done)
 {
     auto state = std::make_shared<WriteState>();
@@ -330,7 +306,7 @@ void DeviceParameters::write(const QStringList& names, std::function<void(int fa
             state->done(int(invalid.size()));
         return;
     }
-    state->queue = orderForWrite(wanted);
+    state->queue = WriteOrder::of(profile(), wanted);
     for (const QString& n : state->queue) {
         m_entries[n].state = State::Writing;
         emit entryChanged(n);

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "profile/ParamValue.h"
-#include "profile/Profile.h"
+#include "model/profile/ParamValue.h"
+#include "model/profile/Profile.h"
 
 #include <QHash>
 #include <QObject>
@@ -101,7 +101,6 @@ signals:
 private:
     struct WriteState;
     void writeNext(std::shared_ptr<WriteState> state);
-    QStringList orderForWrite(QStringList names) const;
 
     DeviceSession* m_session;
     QHash<QString, Entry> m_entries;

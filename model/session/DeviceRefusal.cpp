@@ -1,9 +1,9 @@
-#include "session/DeviceRefusal.h"
+#include "model/session/DeviceRefusal.h"
 
-#include "ModbusClient.h"
-#include "profile/Profile.h"
-#include "session/BlockReader.h"
-#include "session/DeviceSession.h"
+#include "model/profile/Profile.h"
+#include "model/session/BlockReader.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 namespace opentop {
 

@@ -1,12 +1,12 @@
-#include "session/DeviceSession.h"
+#include "model/session/DeviceSession.h"
 
-#include "ModbusClient.h"
-#include "profile/ValueCodec.h"
-#include "session/BlockReader.h"
-#include "session/BlockWriter.h"
-#include "session/DependentValues.h"
-#include "session/DeviceRefusal.h"
-#include "session/ReachedDrives.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/BlockReader.h"
+#include "model/session/BlockWriter.h"
+#include "model/session/DependentValues.h"
+#include "model/session/DeviceRefusal.h"
+#include "model/session/ReachedDrives.h"
+#include "transport/ModbusClient.h"
 
 #include <utility>
 

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "ModbusRequest.h"
-#include "profile/ParamValue.h"
-#include "profile/Profile.h"
-#include "profile/ValueContext.h"
-#include "session/GroupReach.h"
-#include "session/ReachedResult.h"
+#include "model/profile/ParamValue.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueContext.h"
+#include "model/session/GroupReach.h"
+#include "model/session/ReachedResult.h"
+#include "transport/ModbusRequest.h"
 
 #include <QHash>
 #include <QObject>

@@ -1,8 +1,8 @@
-#include "session/ParameterInitialiser.h"
+#include "model/session/ParameterInitialiser.h"
 
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <QHash>
 #include <algorithm>

@@ -1,6 +1,6 @@
-#include "session/ProbeJournal.h"
+#include "model/session/ProbeJournal.h"
 
-#include "ModelLog.h"
+#include "model/ModelLog.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,10 +1,10 @@
-#include "session/ReachedDrives.h"
+#include "model/session/ReachedDrives.h"
 
-#include "ModbusClient.h"
-#include "profile/ValueCodec.h"
-#include "session/BlockReader.h"
-#include "session/DependentValues.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/BlockReader.h"
+#include "model/session/DependentValues.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <memory>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "session/DeviceSession.h"
-#include "session/ReachedResult.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/ReachedResult.h"
 
 #include <QCoreApplication>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "profile/ParamValue.h"
+#include "model/profile/ParamValue.h"
 
 #include <QString>
 

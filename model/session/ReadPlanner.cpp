@@ -1,4 +1,4 @@
-#include "session/ReadPlanner.h"
+#include "model/session/ReadPlanner.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "session/SerialLock.h"
+#include "model/session/SerialLock.h"
 
 #include <QCoreApplication>
 

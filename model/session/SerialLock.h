@@ -1,7 +1,7 @@
 #pragma once
 
-#include "profile/Profile.h"
-#include "profile/ValueContext.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueContext.h"
 
 #include <QString>
 

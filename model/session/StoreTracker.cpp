@@ -1,6 +1,6 @@
-#include "session/StoreTracker.h"
+#include "model/session/StoreTracker.h"
 
-#include "session/DeviceSession.h"
+#include "model/session/DeviceSession.h"
 
 namespace opentop {
 

@@ -1,10 +1,10 @@
-#include "session/VariantProber.h"
+#include "model/session/VariantProber.h"
 
-#include "ModbusClient.h"
-#include "ModelLog.h"
-#include "profile/Profile.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/ModelLog.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QTimer>
 

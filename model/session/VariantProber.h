@@ -1,7 +1,7 @@
 #pragma once
 
-#include "profile/VariantProbe.h"
-#include "session/ProbeJournal.h"
+#include "model/profile/VariantProbe.h"
+#include "model/session/ProbeJournal.h"
 
 #include <QObject>
 #include <QVector>

@@ -1,11 +1,11 @@
-#include "traffic/TrafficDescriber.h"
+#include "model/traffic/TrafficDescriber.h"
 
-#include "ModbusRequest.h"
-#include "bus/BusDrives.h"
-#include "bus/BusGroups.h"
-#include "profile/Profile.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusGroups.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "transport/ModbusRequest.h"
 
 #include <QCoreApplication>
 #include <QHash>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "TrafficLog.h"
+#include "transport/TrafficLog.h"
 
 #include <QString>
 #include <functional>

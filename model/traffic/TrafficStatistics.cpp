@@ -1,6 +1,6 @@
-#include "traffic/TrafficStatistics.h"
+#include "model/traffic/TrafficStatistics.h"
 
-#include "ModbusResult.h"
+#include "transport/ModbusResult.h"
 
 #include <QStringList>
 

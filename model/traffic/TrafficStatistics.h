@@ -1,6 +1,6 @@
 #pragma once
 
-#include "TrafficEntry.h"
+#include "transport/TrafficEntry.h"
 
 #include <QMap>
 #include <QVector>

@@ -1,6 +1,6 @@
-#include "tuning/GainDesign.h"
+#include "model/tuning/GainDesign.h"
 
-#include "tuning/TuningSpec.h"
+#include "model/tuning/TuningSpec.h"
 
 namespace opentop {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "tuning/PidGains.h"
-#include "tuning/PlantModel.h"
-#include "tuning/StepMetrics.h"
-#include "tuning/TuningRules.h"
+#include "model/tuning/PidGains.h"
+#include "model/tuning/PlantModel.h"
+#include "model/tuning/StepMetrics.h"
+#include "model/tuning/TuningRules.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "tuning/PidGains.h"
+#include "model/tuning/PidGains.h"
 
 #include <QCoreApplication>
 

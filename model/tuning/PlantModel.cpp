@@ -1,6 +1,6 @@
-#include "tuning/PlantModel.h"
+#include "model/tuning/PlantModel.h"
 
-#include "tuning/TuningSpec.h"
+#include "model/tuning/TuningSpec.h"
 
 #include <QVector>
 

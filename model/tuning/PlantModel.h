@@ -1,7 +1,7 @@
 #pragma once
 
-#include "tuning/PidGains.h"
-#include "tuning/TuningSample.h"
+#include "model/tuning/PidGains.h"
+#include "model/tuning/TuningSample.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "tuning/RelayAnalysis.h"
+#include "model/tuning/RelayAnalysis.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tuning/RelayTuning.h"
+#include "model/tuning/RelayTuning.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "tuning/StepMetrics.h"
+#include "model/tuning/StepMetrics.h"
 
 #include <algorithm>
 #include <cmath>

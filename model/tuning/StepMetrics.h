@@ -1,6 +1,6 @@
 #pragma once
 
-#include "tuning/TuningSample.h"
+#include "model/tuning/TuningSample.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -1,6 +1,6 @@
-#include "tuning/TuningRules.h"
+#include "model/tuning/TuningRules.h"
 
-#include "tuning/TuningSpec.h"
+#include "model/tuning/TuningSpec.h"
 
 namespace opentop {
 

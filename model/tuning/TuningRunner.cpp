@@ -1,8 +1,8 @@
-#include "tuning/TuningRunner.h"
+#include "model/tuning/TuningRunner.h"
 
-#include "ModelLog.h"
-#include "session/DeviceSession.h"
-#include "tuning/RelayTuning.h"
+#include "model/ModelLog.h"
+#include "model/session/DeviceSession.h"
+#include "model/tuning/RelayTuning.h"
 
 #include <QPointer>
 #include <QTimer>

@@ -1,12 +1,12 @@
 #pragma once
 
-#include "tuning/GainDesign.h"
-#include "tuning/PidGains.h"
-#include "tuning/PlantModel.h"
-#include "tuning/RelayAnalysis.h"
-#include "tuning/StepMetrics.h"
-#include "tuning/TuningRules.h"
-#include "tuning/TuningSpec.h"
+#include "model/tuning/GainDesign.h"
+#include "model/tuning/PidGains.h"
+#include "model/tuning/PlantModel.h"
+#include "model/tuning/RelayAnalysis.h"
+#include "model/tuning/StepMetrics.h"
+#include "model/tuning/TuningRules.h"
+#include "model/tuning/TuningSpec.h"
 
 #include <QElapsedTimer>
 #include <QObject>

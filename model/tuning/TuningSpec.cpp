@@ -1,6 +1,6 @@
-#include "tuning/TuningSpec.h"
+#include "model/tuning/TuningSpec.h"
 
-#include "profile/Profile.h"
+#include "model/profile/Profile.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

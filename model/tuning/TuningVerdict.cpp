@@ -1,4 +1,4 @@
-#include "tuning/TuningVerdict.h"
+#include "model/tuning/TuningVerdict.h"
 
 #include <QLocale>
 

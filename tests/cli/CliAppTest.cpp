@@ -1,7 +1,7 @@
-#include "CliApp.h"
-#include "CliContext.h"
-#include "CliTestSupport.h"
-#include "ExitCode.h"
+#include "cli/CliApp.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <QTextStream>
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
 // A backup or restore whose reads fail must say so, never report them as done: no "69 settings
 // read in 13 requests" for a drive that did not answer, no "0 of 69 settings differ" when
 // nothing could be compared (issue 11, item 6).
-#include "CliTestSupport.h"
-#include "ExitCode.h"
-#include "SimBus.h"
-#include "TcpSimServer.h"
+#include "cli/ExitCode.h"
+#include "sim/SimBus.h"
+#include "sim/TcpSimServer.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <QFile>
 #include <QRegularExpression>

@@ -1,8 +1,8 @@
 // What the command line says when it is given wrong options, files that are no backup files,
 // outputs that are no regular files, the same setting twice, or a bus that does not answer.
-#include "CliTestSupport.h"
-#include "ExitCode.h"
-#include "FifoReader.h"
+#include "cli/ExitCode.h"
+#include "tests/cli/CliTestSupport.h"
+#include "tests/support/FifoReader.h"
 
 #include <QFile>
 #include <QFileInfo>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "CliApp.h"
+#include "cli/CliApp.h"
 
 #include <QStringList>
 #include <QTextStream>

@@ -1,8 +1,8 @@
 // The serial line's RS-485 and low-latency options: parsed into the settings, wrong values
 // named with the allowed ones, and refused for a bus that has no serial line.
-#include "ConnectionOptions.h"
-#include "CliTestSupport.h"
-#include "ExitCode.h"
+#include "connection/ConnectionOptions.h"
+#include "cli/ExitCode.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <gtest/gtest.h>
 

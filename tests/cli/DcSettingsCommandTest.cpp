@@ -1,8 +1,8 @@
 // `set` and `scan` for the DC controller's manual rules (issue 14 §3): PID coefficients above
 // the recommendation written with a warning, the serial lock only with --yes, the line settings'
 // note, and the fixed potentiometer-mode settings offered after an empty scan.
-#include "CliTestSupport.h"
-#include "ExitCode.h"
+#include "cli/ExitCode.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <gtest/gtest.h>
 

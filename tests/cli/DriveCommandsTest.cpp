@@ -1,12 +1,12 @@
 // monitor, alarms, run and stop-all in process against --sim buses, with wrong values and
 // missing confirmations.
-#include "CliApp.h"
-#include "CliContext.h"
-#include "CliTestSupport.h"
-#include "ConnectionOptions.h"
-#include "ExitCode.h"
-#include "ModbusClient.h"
-#include "SimBus.h"
+#include "cli/CliApp.h"
+#include "cli/CliContext.h"
+#include "cli/ExitCode.h"
+#include "connection/ConnectionOptions.h"
+#include "sim/SimBus.h"
+#include "tests/cli/CliTestSupport.h"
+#include "transport/ModbusClient.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>

@@ -1,8 +1,8 @@
 // `opentop-cli eol recipe create|check|sign|show` as a user runs them: recipes made from a
 // backup file and from drives on a simulated bus, refused recipes, a hand-edited recipe.
-#include "CliTestSupport.h"
-#include "ExitCode.h"
-#include "eol/RecipeFile.h"
+#include "cli/ExitCode.h"
+#include "model/eol/RecipeFile.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <QFile>
 #include <QJsonArray>

@@ -1,12 +1,12 @@
 // `opentop-cli eol results` and `eol certificate` on a real SQLite results database filled
 // through ResultStore, as a station fills it.
-#include "CliTestSupport.h"
-#include "EolSampleUnit.h"
-#include "ExitCode.h"
-#include "eol/ResultCsv.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultStore.h"
+#include "cli/ExitCode.h"
+#include "model/eol/ResultCsv.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultStore.h"
+#include "tests/cli/CliTestSupport.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QFile>
 #include <QJsonArray>

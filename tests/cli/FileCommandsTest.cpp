@@ -1,12 +1,12 @@
 // backup, restore and compare as a user runs them. A simulated bus served over Modbus TCP in
 // this process keeps its drives between commands (each --sim command starts a fresh bus), and
 // its console backdoor changes them behind the program's back.
-#include "CliTestSupport.h"
-#include "ExitCode.h"
-#include "SimBus.h"
-#include "TcpSimServer.h"
-#include "files/BackupFile.h"
-#include "profile/ProfileRegistry.h"
+#include "cli/ExitCode.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "sim/SimBus.h"
+#include "sim/TcpSimServer.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <QFile>
 #include <QJsonArray>

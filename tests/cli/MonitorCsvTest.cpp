@@ -1,8 +1,8 @@
 // `monitor --csv FILE` reports a CSV it cannot write (a full device) and stops, instead of going
 // on as if the samples were recorded; a FIFO is written through.
-#include "CliTestSupport.h"
-#include "ExitCode.h"
-#include "FifoReader.h"
+#include "cli/ExitCode.h"
+#include "tests/cli/CliTestSupport.h"
+#include "tests/support/FifoReader.h"
 
 #include <QFileInfo>
 #include <QTemporaryDir>

@@ -1,5 +1,5 @@
-#include "CliTestSupport.h"
-#include "ExitCode.h"
+#include "cli/ExitCode.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

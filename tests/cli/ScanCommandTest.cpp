@@ -1,7 +1,7 @@
 // `opentop-cli scan` in process on simulated buses (--sim): small ranges and short waits keep
 // these fast; the full-range timing is opentop-bench's business.
-#include "CliTestSupport.h"
-#include "ExitCode.h"
+#include "cli/ExitCode.h"
+#include "tests/cli/CliTestSupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

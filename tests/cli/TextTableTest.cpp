@@ -1,7 +1,7 @@
 // Tables on a terminal in every language (issue 13): a Chinese, Japanese or Korean character
 // takes two columns, so the columns after it line up only when padded by terminal width.
-#include "TextTable.h"
-#include "TerminalWidth.h"
+#include "cli/TextTable.h"
+#include "cli/TerminalWidth.h"
 
 #include <QTextStream>
 #include <gtest/gtest.h>

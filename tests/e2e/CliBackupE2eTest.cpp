@@ -1,7 +1,7 @@
 // opentop-cli backing up and restoring drives of an opentop-sim process over a pty with wire
 // timing: real processes, the real RTU backend, files on disk, exit codes and Ctrl-C.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

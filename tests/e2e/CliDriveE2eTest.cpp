@@ -1,7 +1,7 @@
 // The opentop-cli binary against an opentop-sim process over a pty: a test run, the live
 // monitor (ended by --count and by Ctrl-C), alarms and stop-all.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

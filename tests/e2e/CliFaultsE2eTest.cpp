@@ -1,8 +1,8 @@
 // opentop-cli against an opentop-sim process over a pty: a dropped session (SIGHUP) during a
 // restore is reported like Ctrl-C, and wrong connection options are usage errors before the
 // port is touched. Real processes, exit codes and messages.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

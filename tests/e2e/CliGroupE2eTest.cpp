@@ -2,8 +2,8 @@
 // a group parent also reaches its children (TROY manual 11-3), so the CLI names them, refuses
 // without --yes (nothing sent), and with --yes reads back what the children hold; scan shows
 // each drive's group and the setups that are wrong.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 using namespace opentop::test;
 

@@ -2,8 +2,8 @@
 // item 1): a reply that comes after the timeout must never pass for the answer to the retry or
 // to the next request. Every value the program reads (backup file, compare, restore's check) is
 // compared with what the simulated drive really holds.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QFile>
 #include <QJsonArray>

@@ -2,8 +2,8 @@
 // opentop-cli against an opentop-sim process on a half-duplex pty with wire timing. The names
 // are kept per bus in the settings the window reads too (BusMemory); this test process's own
 // settings folder (PrivateUserDirs) is inherited by the programs it starts.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QFile>

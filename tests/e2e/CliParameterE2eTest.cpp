@@ -1,8 +1,8 @@
 // get and set through the opentop-cli executable over a pty against an opentop-sim process:
 // the values reach the drive (checked through the simulator's own console), a wrong value sends
 // nothing, and injected faults are survived by retries or reported.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QProcess>
 

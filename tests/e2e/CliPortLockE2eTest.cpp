@@ -1,8 +1,8 @@
 // Two programs, one port (issue 11, section 5): a second opentop-cli on a port another one holds
 // is refused with the holder's name and PID and sends nothing; a SIGKILLed opentop-cli's lock
 // does not block the next run. Real processes over the simulator's pty.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QDir>
 #include <QFile>

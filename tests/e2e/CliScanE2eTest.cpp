@@ -1,7 +1,7 @@
 // The opentop-cli executable scanning an opentop-sim process over a pty with wire timing: the
 // real RTU backend, real processes, real exit codes and signals. Small ranges keep it fast.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

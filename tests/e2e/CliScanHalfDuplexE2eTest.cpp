@@ -3,8 +3,8 @@
 // with placements and answer delays drawn from seeded generators: every drive found every time.
 // An address that answers but cannot be identified is reported (text, --json, exit 1), never
 // dropped.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,8 +1,8 @@
 // opentop-cli's RS-485 and low-latency options against opentop-sim over a pty: the programs say
 // what the driver accepted (a pty takes neither RS-485 mode nor RTS, and is no UART), and the
 // scan still finds the drive.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 using namespace opentop::test;
 

@@ -2,8 +2,8 @@
 // outside a closed-loop mode, a step test's report, a limit that stops the motor mid-test, the
 // autotune writing its gains only with --accept, a relay on a 19200 bit/s line refused with what
 // to change, and a failed check after --accept writing the gains back unless --override-check.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>

@@ -1,8 +1,8 @@
 // The port pulled out under opentop-cli (the simulator's console "unplug" closes the pty) in
 // the middle of a backup: one clear error naming the port, exit 1, nothing written; after
 // "replug" the backup completes. Real processes, exit codes and messages.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>

@@ -2,11 +2,11 @@
 // first administrator, users added with an identity, `eol run` refused without a user, with a
 // wrong password and with an unapproved or edited recipe (nothing sent, nothing recorded), and
 // run once an engineer approved it, the record naming its approval and approver; `eol audit`.
-#include "CliProcess.h"
-#include "SimProcess.h"
-#include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -4,9 +4,9 @@
 // hold's load limit comes down from the default 100 % to the measured load plus the stated
 // margin, so that a unit drawing 30 % more than the golden one now fails where the default
 // passed it, and the golden unit itself still passes.
-#include "CliProcess.h"
-#include "SimProcess.h"
-#include "eol/RecipeFile.h"
+#include "model/eol/RecipeFile.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QFile>
 #include <QJsonArray>

@@ -2,11 +2,11 @@
 // with a results database file. PASS and FAIL with their exit codes and JSON lines; Ctrl-C (a
 // line controller's SIGTERM), a vanished port and kill -9 while the motor runs: the motor
 // stopped (or, where it cannot be, said so), the record never a pass, the database valid.
-#include "CliProcess.h"
-#include "SimProcess.h"
-#include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>

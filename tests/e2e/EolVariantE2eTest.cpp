@@ -3,11 +3,11 @@
 // with the matching drives (a mixed DBU200/DBU400 unit included); a DBU400 at a DBU200
 // position never passes as a DBU200, and the probe leaves its registers as they were;
 // --variant outside the recipe is refused before anything is sent.
-#include "CliProcess.h"
-#include "SimProcess.h"
-#include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>

@@ -3,12 +3,12 @@
 // drives (DBU manual 11-1), and a request that overlaps a late reply destroys both, as on an
 // RS-485 pair. OpenTOP must keep the gap, and its scan must still find a drive that answers as
 // late as the manual allows.
-#include "ModbusClient.h"
-#include "RtuBackend.h"
-#include "ScanToEnd.h"
-#include "SimProcess.h"
-#include "bus/BusScanner.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusScanner.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/e2e/ScanToEnd.h"
+#include "tests/e2e/SimProcess.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
 
 #include <QEventLoop>
 #include <QTimer>

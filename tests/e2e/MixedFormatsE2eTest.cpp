@@ -5,8 +5,8 @@
 // reach both, the port switched between transactions. Scans wait 60 ms per machine number: on
 // a loaded machine the simulator answers late (the scan's rescue of late answers is
 // CliScanE2e's and ScanLateAnswerE2e's subject, not this test's).
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

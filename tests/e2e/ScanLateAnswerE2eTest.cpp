@@ -3,12 +3,12 @@
 // in each step). The late reply is then already waiting when the next address is asked, and the
 // transport discards it; the scanner must still ask that drive again. The soak found the
 // program's scan of 247 drives missing 2–23 of them this way.
-#include "ModbusClient.h"
-#include "RtuBackend.h"
-#include "ScanToEnd.h"
-#include "SimProcess.h"
-#include "bus/BusScanner.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusScanner.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/e2e/ScanToEnd.h"
+#include "tests/e2e/SimProcess.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
 
 #include <QThread>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Runs a bus scan to its end in a local event loop, as the e2e tests over a pty need it.
 #pragma once
-#include "bus/BusScanner.h"
+#include "model/bus/BusScanner.h"
 
 #include <QEventLoop>
 #include <QTimer>

@@ -4,16 +4,16 @@
 // bit/s, with placements and answer delays drawn from seeded generators. The DC controller's
 // 25-byte identification reply is still on the wire when the first-byte wait ends; a poll sent
 // then destroyed it and the scan lost the controller. Every drive must be found every time.
-#include "ModbusClient.h"
-#include "RtuBackend.h"
-#include "ScanToEnd.h"
-#include "SimProcess.h"
-#include "bus/BusDrives.h"
-#include "bus/BusScanner.h"
-#include "bus/DriveStatusPoller.h"
-#include "monitor/MonitorHub.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceIdentifier.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusScanner.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceIdentifier.h"
+#include "tests/e2e/ScanToEnd.h"
+#include "tests/e2e/SimProcess.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
 
 #include <QEventLoop>
 #include <QRandomGenerator>

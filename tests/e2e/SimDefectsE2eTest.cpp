@@ -3,8 +3,8 @@
 // saturating below its target with a high load (monitor), an alarm while running (alarms), a
 // setting that does not stick (set fails its verification). The console changes them live; bad
 // defects are usage errors of both programs.
-#include "CliProcess.h"
-#include "SimProcess.h"
+#include "tests/e2e/CliProcess.h"
+#include "tests/e2e/SimProcess.h"
 
 #include <QProcess>
 #include <QThread>

@@ -1,14 +1,14 @@
 // opentop-sim as a separate process on a pty (and TCP), driven through the project's libmodbus
 // backends and the bus client: reads, writes, exceptions, broadcast, identification, faults,
 // wire timing, console, shutdown.
-#include "SimProcess.h"
+#include "tests/e2e/SimProcess.h"
 
-#include "ConnectionSettings.h"
-#include "DeviceIdentification.h"
-#include "ModbusClient.h"
-#include "ModbusRequest.h"
-#include "RtuBackend.h"
-#include "TcpBackend.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/DeviceIdentification.h"
+#include "transport/ModbusClient.h"
+#include "transport/ModbusRequest.h"
+#include "transport/RtuBackend.h"
+#include "transport/TcpBackend.h"
 
 #include <QFileInfo>
 #include <QTemporaryDir>

@@ -1,11 +1,11 @@
 // opentop-sim as a program: console, arguments, shutdown, and third-party cross-checks with
 // mbpoll.
-#include "SimProcess.h"
+#include "tests/e2e/SimProcess.h"
 
-#include "ConnectionSettings.h"
-#include "ModbusClient.h"
-#include "ModbusRequest.h"
-#include "RtuBackend.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/ModbusClient.h"
+#include "transport/ModbusRequest.h"
+#include "transport/RtuBackend.h"
 
 #include <QFileInfo>
 #include <QStandardPaths>

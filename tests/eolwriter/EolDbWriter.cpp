@@ -5,8 +5,8 @@
 //       and waits there to be killed
 // Each unit has two drives, three written values, three measurements and, when it fails, two
 // traffic lines; unit i of a station fails when i % 5 == 4. Exit status 0, or 1 with the error.
-#include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultStore.h"
 
 #include <QCoreApplication>
 #include <QThread>

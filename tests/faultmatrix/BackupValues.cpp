@@ -1,4 +1,4 @@
-#include "BackupValues.h"
+#include "tests/faultmatrix/BackupValues.h"
 
 #include <QFile>
 #include <QJsonArray>

@@ -1,4 +1,4 @@
-#include "FaultCounts.h"
+#include "tests/faultmatrix/FaultCounts.h"
 
 namespace opentop::faultmatrix {
 

@@ -1,6 +1,6 @@
-#include "FaultJudge.h"
+#include "tests/faultmatrix/FaultJudge.h"
 
-#include "MatrixSim.h"
+#include "tests/faultmatrix/MatrixSim.h"
 
 #include <QJsonArray>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "BackupValues.h"
-#include "FaultCounts.h"
-#include "MatrixCli.h"
+#include "tests/faultmatrix/BackupValues.h"
+#include "tests/faultmatrix/FaultCounts.h"
+#include "tests/faultmatrix/MatrixCli.h"
 
 #include <QHash>
 

@@ -1,4 +1,4 @@
-#include "MatrixCli.h"
+#include "tests/faultmatrix/MatrixCli.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>

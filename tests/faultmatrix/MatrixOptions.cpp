@@ -1,4 +1,4 @@
-#include "MatrixOptions.h"
+#include "tests/faultmatrix/MatrixOptions.h"
 
 #include <QStringList>
 

@@ -1,6 +1,6 @@
-#include "MatrixSim.h"
+#include "tests/faultmatrix/MatrixSim.h"
 
-#include "BackupValues.h"
+#include "tests/faultmatrix/BackupValues.h"
 
 #include <QRegularExpression>
 #include <csignal>

@@ -1,4 +1,4 @@
-#include "MatrixSteps.h"
+#include "tests/faultmatrix/MatrixSteps.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>

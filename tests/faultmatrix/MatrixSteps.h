@@ -1,11 +1,11 @@
 #pragma once
 
-#include "BackupValues.h"
-#include "FaultCounts.h"
-#include "FaultJudge.h"
-#include "MatrixCli.h"
-#include "MatrixOptions.h"
-#include "MatrixSim.h"
+#include "tests/faultmatrix/BackupValues.h"
+#include "tests/faultmatrix/FaultCounts.h"
+#include "tests/faultmatrix/FaultJudge.h"
+#include "tests/faultmatrix/MatrixCli.h"
+#include "tests/faultmatrix/MatrixOptions.h"
+#include "tests/faultmatrix/MatrixSim.h"
 
 #include <QTemporaryDir>
 #include <QTextStream>

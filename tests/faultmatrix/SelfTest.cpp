@@ -1,8 +1,8 @@
-#include "SelfTest.h"
+#include "tests/faultmatrix/SelfTest.h"
 
-#include "FaultJudge.h"
-#include "MatrixSim.h"
-#include "MatrixSteps.h"
+#include "tests/faultmatrix/FaultJudge.h"
+#include "tests/faultmatrix/MatrixSim.h"
+#include "tests/faultmatrix/MatrixSteps.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "MatrixOptions.h"
+#include "tests/faultmatrix/MatrixOptions.h"
 
 #include <QTextStream>
 

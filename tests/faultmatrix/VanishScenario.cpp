@@ -1,6 +1,6 @@
-#include "VanishScenario.h"
+#include "tests/faultmatrix/VanishScenario.h"
 
-#include "MatrixSteps.h"
+#include "tests/faultmatrix/MatrixSteps.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "FaultCounts.h"
-#include "MatrixCli.h"
-#include "MatrixOptions.h"
+#include "tests/faultmatrix/FaultCounts.h"
+#include "tests/faultmatrix/MatrixCli.h"
+#include "tests/faultmatrix/MatrixOptions.h"
 
 #include <QTextStream>
 

@@ -1,11 +1,11 @@
 // opentop-faultmatrix: the fault matrix over a real line (issue 11, section 3). Drives the
 // real opentop-sim (--wire-timing, seeded faults, a pty) and opentop-cli as a user would, and
 // counts what the tool got wrong or did not report. See docs/communication.md.
-#include "FaultCounts.h"
-#include "MatrixOptions.h"
-#include "MatrixSteps.h"
-#include "SelfTest.h"
-#include "VanishScenario.h"
+#include "tests/faultmatrix/FaultCounts.h"
+#include "tests/faultmatrix/MatrixOptions.h"
+#include "tests/faultmatrix/MatrixSteps.h"
+#include "tests/faultmatrix/SelfTest.h"
+#include "tests/faultmatrix/VanishScenario.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

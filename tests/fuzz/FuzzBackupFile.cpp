@@ -1,7 +1,7 @@
 // libFuzzer harness: the backup file reader (BackupFile::fromJson) on arbitrary bytes. Any crash,
 // leak or sanitizer report is a defect; a refusal with a reason is the expected outcome.
-#include "files/BackupFile.h"
-#include "profile/ProfileRegistry.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/ProfileRegistry.h"
 #include <QByteArray>
 #include <QString>
 #include <cstddef>

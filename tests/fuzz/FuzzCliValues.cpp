@@ -1,10 +1,10 @@
 // libFuzzer harness: the values a user types on the command line. The first byte picks what the
 // text is: a bus SPEC (BusSpec::parse), an id list (CliContext::parseIds) or a `set` value
 // (ValueCodec::encodeText) for one of the built-in profiles' parameters; the rest is the text.
-#include "CliContext.h"
-#include "bus/BusSpec.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "cli/CliContext.h"
+#include "model/bus/BusSpec.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
 #include <QString>
 #include <cstddef>
 #include <cstdint>

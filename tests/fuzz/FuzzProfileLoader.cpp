@@ -1,5 +1,5 @@
 // libFuzzer harness: the profile loader (ProfileLoader::loadJson) on arbitrary bytes.
-#include "profile/ProfileLoader.h"
+#include "model/profile/ProfileLoader.h"
 #include <QByteArray>
 #include <QString>
 #include <cstddef>

@@ -1,10 +1,10 @@
 // libFuzzer harness: the recipe file reader (RecipeFile::fromJson) on arbitrary bytes, and the
 // checker on whatever it accepts. Any crash, leak or sanitizer report is a defect; a refusal
 // with a reason is the expected outcome.
-#include "eol/RecipeChecker.h"
-#include "eol/RecipeFile.h"
-#include "files/BackupFile.h"
-#include "profile/ProfileRegistry.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/eol/RecipeFile.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/ProfileRegistry.h"
 #include <QByteArray>
 #include <QJsonDocument>
 #include <QJsonObject>

@@ -2,9 +2,9 @@
 // (read holding/input, write single/multiple, 0x2B device identification); the rest is the
 // reply as received. Framing (expectedReplyLength) and decoding (decodeReply) must never read
 // past the bytes given, whatever the length, CRC, exception or object list says.
-#include "ModbusRequest.h"
-#include "ModbusResult.h"
-#include "RtuFrame.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusResult.h"
+#include "transport/RtuFrame.h"
 #include <QByteArray>
 #include <cstddef>
 #include <cstdint>

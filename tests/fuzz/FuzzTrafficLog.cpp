@@ -5,12 +5,12 @@
 // the direction and whether the drive is a group parent; byte 1 is the length of the request
 // frame that follows (decoded with RtuFrame::decodeRequest as the log's request); the rest is
 // the frame the entry carries. Nothing may read past the bytes given, whatever they claim.
-#include "ModbusRequest.h"
-#include "RtuFrame.h"
-#include "TrafficEntry.h"
-#include "bus/BusGroups.h"
-#include "profile/ProfileRegistry.h"
-#include "traffic/TrafficDescriber.h"
+#include "model/bus/BusGroups.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/traffic/TrafficDescriber.h"
+#include "transport/ModbusRequest.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficEntry.h"
 #include <QByteArray>
 #include <QDateTime>
 #include <algorithm>

@@ -3,13 +3,13 @@
 // An in-process simulated bus with sessions and helpers to wait for asynchronous engines, for
 // the monitor, alarm history and run control tests.
 
-#include "ModbusClient.h"
-#include "SimBackend.h"
-#include "SimBus.h"
-#include "TrafficLog.h"
-#include "bus/BusDrives.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "sim/SimBackend.h"
+#include "sim/SimBus.h"
+#include "transport/ModbusClient.h"
+#include "transport/TrafficLog.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

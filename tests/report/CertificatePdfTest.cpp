@@ -1,6 +1,6 @@
-#include "CertificatePdf.h"
-#include "EolSampleUnit.h"
-#include "eol/CertificateHtml.h"
+#include "report/CertificatePdf.h"
+#include "model/eol/CertificateHtml.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QFile>
 #include <QProcess>

@@ -1,6 +1,6 @@
 // DBU alarms and warnings: stacks of 15 records (newest first), reset rules, erase commands,
 // parameter initialisation and power cycling (manual 7, 12-6 .. 12-9, 13).
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -2,7 +2,7 @@
 // that saturates below its target or stalls, a load too high, an alarm while running, a setting
 // that does not stick or is not kept over a power cycle. Drive 1 is good, drive 2 has defects:
 // both get the same frames.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,6 +1,6 @@
 // DBU motion: communication control, speed ramps, SPno selection, direction, limits, I/O
 // control, status bits and outputs (manual chapters 7, 9, 12).
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
 #include <cmath>
 

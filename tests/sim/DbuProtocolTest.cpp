@@ -1,6 +1,6 @@
 // DBU request handling: the manual's example frames, exception codes and the communication
 // error register 0x007B (manual 11-5, 12).
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

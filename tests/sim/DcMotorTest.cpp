@@ -1,9 +1,9 @@
 // The simulated DC motor and the controller's speed loop (DcMotor, DcSpeedLoop): physics that
 // make gains matter, measured through the registers as OpenTOP would see them.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "DcMotor.h"
-#include "DcPidSimDevice.h"
+#include "sim/DcMotor.h"
+#include "sim/DcPidSimDevice.h"
 
 #include <cmath>
 #include <cstring>

@@ -2,9 +2,9 @@
 // (version register and 2B/0E revision), a motor that saturates below its speed or stalls, a
 // current too high, the stall stop while running, a setting that does not stick or is not
 // stored. Controller 7 is good, controller 8 has defects: both get the same frames.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "DeviceIdentification.h"
+#include "transport/DeviceIdentification.h"
 
 using namespace opentop;
 using namespace opentop::test;

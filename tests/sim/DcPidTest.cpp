@@ -1,9 +1,9 @@
 // The DC motor PID controller (its manual, section 1): functions, exceptions, speed modes and
 // ramps, temporary versus stored configuration, communication loss braking, identification.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "DcPidSimDevice.h"
-#include "DeviceIdentification.h"
+#include "sim/DcPidSimDevice.h"
+#include "transport/DeviceIdentification.h"
 
 #include <cstring>
 

@@ -1,7 +1,7 @@
 // Fault injection: parsing, reproducibility from a seed, rates, and the effect on the bus.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "FaultInjector.h"
+#include "sim/FaultInjector.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,9 +1,9 @@
 // A family described only by its profile is simulated from the data: defaults, validation,
 // read blocks, temporary settings until their store command.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "GenericSimDevice.h"
-#include "profile/ProfileLoader.h"
+#include "model/profile/ProfileLoader.h"
+#include "sim/GenericSimDevice.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,9 +1,9 @@
 // The pty pulled out and plugged in again (console unplug / replug): the client's port fails,
 // the symlink goes, a new pty appears behind the same symlink and the devices keep their state.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "PtySimServer.h"
-#include "SimConsole.h"
+#include "sim/PtySimServer.h"
+#include "sim/SimConsole.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

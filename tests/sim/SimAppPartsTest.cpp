@@ -1,8 +1,8 @@
 // opentop-sim's command line and console.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "SimConsole.h"
-#include "SimOptions.h"
+#include "sim/SimConsole.h"
+#include "sim/SimOptions.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,12 +1,12 @@
 // The in-process simulated backend: frames through RtuFrame, the traffic log, faults as
 // timeouts, wire timing.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "DeviceIdentification.h"
-#include "ModbusRequest.h"
-#include "RtuFrame.h"
-#include "SimBackend.h"
-#include "TrafficLog.h"
+#include "sim/SimBackend.h"
+#include "transport/DeviceIdentification.h"
+#include "transport/ModbusRequest.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficLog.h"
 
 #include <QElapsedTimer>
 

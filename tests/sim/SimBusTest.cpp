@@ -1,6 +1,6 @@
 // Routing on the simulated line: machine numbers, broadcast, DBU group communication, silence
 // for unknown ids and bad CRCs, bus specs and line settings.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,13 +1,13 @@
 // The syntax of simulated defects (SimDefectSpec): every form, and every error naming what is
 // allowed; their check against a profile (SimDefects::resolve); --defect and the bus spec.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "SimConsole.h"
-#include "SimDefectSpec.h"
-#include "SimDefects.h"
-#include "SimOptions.h"
-#include "bus/BusSpec.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusSpec.h"
+#include "model/profile/ProfileRegistry.h"
+#include "sim/SimConsole.h"
+#include "sim/SimDefectSpec.h"
+#include "sim/SimDefects.h"
+#include "sim/SimOptions.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,14 +1,14 @@
 // Each simulated drive has line settings of its own: a frame sent in another format is noise to
 // it (no answer), so a DC controller at 8E1 on a DBU bus at 8N1 shows as it does on a wire. On
 // a pty the simulator reads the client's format from the master (TCGETS).
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "ModbusClient.h"
-#include "ModbusRequest.h"
-#include "PtySimServer.h"
-#include "RtuBackend.h"
-#include "RtuFrame.h"
-#include "SimBackend.h"
+#include "sim/PtySimServer.h"
+#include "sim/SimBackend.h"
+#include "transport/ModbusClient.h"
+#include "transport/ModbusRequest.h"
+#include "transport/RtuBackend.h"
+#include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,9 +1,9 @@
 // The pty and TCP servers in process: framing by length and by silence, several frames in one
 // write, symlinks, MBAP.
-#include "SimTestSupport.h"
+#include "tests/sim/SimTestSupport.h"
 
-#include "PtySimServer.h"
-#include "TcpSimServer.h"
+#include "sim/PtySimServer.h"
+#include "sim/TcpSimServer.h"
 
 #include <QCoreApplication>
 #include <QDir>

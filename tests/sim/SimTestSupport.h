@@ -3,10 +3,10 @@
 // Helpers for the simulator tests: a bus on a manual clock, frames built and decoded by hand
 // (independent of the transport's RtuFrame, so that both are checked against each other).
 
-#include "ManualSimClock.h"
-#include "ModbusCrc.h"
-#include "SimBus.h"
-#include "SimDevice.h"
+#include "sim/ManualSimClock.h"
+#include "sim/SimBus.h"
+#include "sim/SimDevice.h"
+#include "transport/ModbusCrc.h"
 
 #include <QByteArray>
 #include <QLoggingCategory>

@@ -1,4 +1,4 @@
-#include "GuiSoak.h"
+#include "tests/soak/GuiSoak.h"
 
 #include <QProcessEnvironment>
 #include <QRegularExpression>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "SoakPart.h"
+#include "tests/soak/SoakPart.h"
 
 #include <QProcess>
 #include <QTemporaryDir>

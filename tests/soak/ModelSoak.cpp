@@ -1,12 +1,12 @@
-#include "ModelSoak.h"
+#include "tests/soak/ModelSoak.h"
 
-#include "BackendFactory.h"
-#include "ConnectionSettings.h"
-#include "ModbusClient.h"
-#include "bus/BusDrives.h"
-#include "bus/BusScanner.h"
-#include "monitor/MonitorHub.h"
-#include "profile/ProfileRegistry.h"
+#include "connection/BackendFactory.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusScanner.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/ModbusClient.h"
 
 #include <QDateTime>
 

@@ -1,4 +1,4 @@
-#include "ProcessProbe.h"
+#include "tests/soak/ProcessProbe.h"
 
 #include <QDir>
 #include <QFile>

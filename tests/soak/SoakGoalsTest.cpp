@@ -1,4 +1,4 @@
-#include "SoakGoals.h"
+#include "tests/soak/SoakGoals.h"
 
 #include <gtest/gtest.h>
 

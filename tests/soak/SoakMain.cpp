@@ -1,7 +1,7 @@
 // opentop-soak: monitoring every drive of a 247-drive bus for a long time, measured
 // (docs/soak.md).
-#include "SoakOptions.h"
-#include "SoakRun.h"
+#include "tests/soak/SoakOptions.h"
+#include "tests/soak/SoakRun.h"
 
 #include <QCoreApplication>
 #include <QSocketNotifier>

@@ -1,4 +1,4 @@
-#include "SoakOptions.h"
+#include "tests/soak/SoakOptions.h"
 
 namespace opentop::soak {
 

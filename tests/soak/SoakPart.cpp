@@ -1,4 +1,4 @@
-#include "SoakPart.h"
+#include "tests/soak/SoakPart.h"
 
 #include <QDeadlineTimer>
 

@@ -1,7 +1,7 @@
 // The soak's own parts: its options, the opentop program's totals line, /proc figures.
-#include "GuiSoak.h"
-#include "ProcessProbe.h"
-#include "SoakOptions.h"
+#include "tests/soak/GuiSoak.h"
+#include "tests/soak/ProcessProbe.h"
+#include "tests/soak/SoakOptions.h"
 
 #include <QFile>
 #include <QTemporaryDir>

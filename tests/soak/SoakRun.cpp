@@ -1,11 +1,11 @@
-#include "SoakRun.h"
+#include "tests/soak/SoakRun.h"
 
-#include "GuiSoak.h"
-#include "ModelSoak.h"
-#include "ProcessProbe.h"
-#include "SoakSim.h"
-#include "bus/BusSpec.h"
-#include "monitor/TrendHistory.h"
+#include "model/bus/BusSpec.h"
+#include "model/monitor/TrendHistory.h"
+#include "tests/soak/GuiSoak.h"
+#include "tests/soak/ModelSoak.h"
+#include "tests/soak/ProcessProbe.h"
+#include "tests/soak/SoakSim.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

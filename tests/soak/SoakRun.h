@@ -1,8 +1,8 @@
 #pragma once
 
-#include "SoakGoals.h"
-#include "SoakOptions.h"
-#include "SoakPart.h"
+#include "tests/soak/SoakGoals.h"
+#include "tests/soak/SoakOptions.h"
+#include "tests/soak/SoakPart.h"
 
 #include <QObject>
 #include <QTextStream>

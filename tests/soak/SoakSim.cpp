@@ -1,4 +1,4 @@
-#include "SoakSim.h"
+#include "tests/soak/SoakSim.h"
 
 #include <QElapsedTimer>
 

@@ -2,8 +2,8 @@
 
 // A unit record with everything a record can hold, and text that tests quoting and escaping
 // (commas, quotes, line breaks, <&>, non-ASCII), for the results database and certificate tests.
-#include "eol/UnitRecord.h"
-#include "eol/UnitRecordJson.h"
+#include "model/eol/UnitRecord.h"
+#include "model/eol/UnitRecordJson.h"
 
 #include <QTimeZone>
 

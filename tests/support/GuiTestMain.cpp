@@ -3,7 +3,7 @@
 #include <QApplication>
 #include <gtest/gtest.h>
 
-#include "PrivateUserDirs.h"
+#include "tests/support/PrivateUserDirs.h"
 
 int main(int argc, char** argv)
 {

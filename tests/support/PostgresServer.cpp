@@ -1,6 +1,6 @@
-#include "PostgresServer.h"
+#include "tests/support/PostgresServer.h"
 
-#include "eol/ResultUrl.h"
+#include "model/eol/ResultUrl.h"
 
 #include <QDir>
 #include <QElapsedTimer>

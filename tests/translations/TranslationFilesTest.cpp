@@ -1,7 +1,7 @@
 // The program's translations (issue 13): every .ts file finished, in step with the source (no
 // message the code has that a file lacks, none a file keeps that the code lost), and every
 // translation carrying the source's placeholders, rich-text tags and accelerator.
-#include "i18n/Language.h"
+#include "model/i18n/Language.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,5 +1,5 @@
-#include "ModbusCrc.h"
-#include "RtuFrame.h"
+#include "transport/ModbusCrc.h"
+#include "transport/RtuFrame.h"
 
 #include <gtest/gtest.h>
 

@@ -2,13 +2,13 @@
 // keeps the per-drive table, and RtuBackend switches the port between transactions only. Over
 // a real openpty() pair: the device thread reads the format the client's port is in with
 // TCGETS on the master (Linux returns the slave's termios there), as opentop-sim does.
-#include "IoctlSerialDriver.h"
-#include "LineFormat.h"
-#include "ModbusClient.h"
-#include "RtuBackend.h"
-#include "RtuFrame.h"
-#include "TrafficLog.h"
-#include "TransportTestSupport.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/IoctlSerialDriver.h"
+#include "transport/LineFormat.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficLog.h"
 
 #include <QElapsedTimer>
 #include <atomic>

@@ -6,10 +6,10 @@
 // The CRCs were recomputed independently (CRC-16/MODBUS, python3). One example is wrong in the
 // manual: chapter 9 "select SPno3", 01 06 20 0F 00 02 33 CB, whose CRC is 33 C8 (C8 33 little
 // endian is 0xC833). The tests use the correct bytes and check that the manual's are refused.
-#include "ModbusCrc.h"
-#include "ModbusRequest.h"
-#include "ModbusResult.h"
-#include "RtuFrame.h"
+#include "transport/ModbusCrc.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusResult.h"
+#include "transport/RtuFrame.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // ModbusClient opening, losing and closing its connection, and bounded destruction.
-#include "MockBackend.h"
-#include "ModbusClient.h"
-#include "TransportTestSupport.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/MockBackend.h"
+#include "transport/ModbusClient.h"
 
 #include <QElapsedTimer>
 #include <QThread>

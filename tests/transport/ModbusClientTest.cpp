@@ -1,8 +1,8 @@
-#include "ModbusClient.h"
-#include "MockBackend.h"
-#include "RtuFrame.h"
-#include "TrafficLog.h"
-#include "TransportTestSupport.h"
+#include "transport/ModbusClient.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/MockBackend.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficLog.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,7 +1,7 @@
-#include "ModbusRequest.h"
-#include "ModbusBackend.h"
-#include "ModbusResult.h"
-#include "RtuFrame.h"
+#include "transport/ModbusRequest.h"
+#include "transport/ModbusBackend.h"
+#include "transport/ModbusResult.h"
+#include "transport/RtuFrame.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // PortLock and PortLockFile on an openpty() pair: who is refused, what the refusal says, and
 // which lock files are stale. Every test uses its own lock directory.
-#include "PortLock.h"
-#include "PortLockFile.h"
+#include "transport/PortLock.h"
+#include "transport/PortLockFile.h"
 
 #include <QDir>
 #include <QFile>

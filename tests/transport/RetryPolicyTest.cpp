@@ -1,10 +1,10 @@
 // Retries on a noisy line (issue 11, item 2): the defaults, and the extra attempts once a
 // request needed a retry to succeed, through the real client worker.
-#include "RetryPolicy.h"
-#include "ConnectionSettings.h"
-#include "ModbusClient.h"
-#include "RtuFrame.h"
-#include "TransportTestSupport.h"
+#include "transport/RetryPolicy.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/ConnectionSettings.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuFrame.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // RtuBackend end to end over an openpty() pair; a thread in the test plays the device with
 // exact reply bytes. Ptys ignore baud and parity, so timing-related tests set a low baud rate
 // only to lengthen the backend's own frame-time arithmetic.
-#include "RtuBackend.h"
-#include "DeviceIdentification.h"
-#include "ModbusClient.h"
-#include "ModbusCrc.h"
-#include "RtuFrame.h"
-#include "TrafficLog.h"
-#include "TransportTestSupport.h"
+#include "transport/RtuBackend.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/DeviceIdentification.h"
+#include "transport/ModbusClient.h"
+#include "transport/ModbusCrc.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficLog.h"
 
 #include <QElapsedTimer>
 #include <QThread>

@@ -6,10 +6,10 @@
 // (issue 24): until its longest reply (7 bytes: 58.3 ms) could have ended after the 50 ms wait,
 // plus the 3.5-character gap (29.2 ms), 137.5 ms after it was sent. A scan's probe after a probe
 // goes at once: the scan sees a collision and asks again.
-#include "RtuBackend.h"
-#include "RtuFrame.h"
-#include "TrafficLog.h"
-#include "TransportTestSupport.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/RtuBackend.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficLog.h"
 
 #include <QElapsedTimer>
 #include <QThread>

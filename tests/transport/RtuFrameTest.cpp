@@ -1,6 +1,6 @@
-#include "RtuFrame.h"
-#include "DeviceIdentification.h"
-#include "ModbusCrc.h"
+#include "transport/RtuFrame.h"
+#include "transport/DeviceIdentification.h"
+#include "transport/ModbusCrc.h"
 
 #include <gtest/gtest.h>
 

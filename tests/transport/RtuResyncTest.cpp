@@ -3,10 +3,10 @@
 // same shape. After a timeout, a foreign or a garbled reply the backend lets the line fall
 // silent for the failed request's late-reply window (one more timeout) before anything goes
 // out again. At 19200 baud a frame time is about 20 ms, far shorter than the late replies here.
-#include "RtuBackend.h"
-#include "RtuFrame.h"
-#include "TrafficLog.h"
-#include "TransportTestSupport.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/RtuBackend.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficLog.h"
 
 #include <QThread>
 #include <atomic>

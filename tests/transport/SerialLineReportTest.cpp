@@ -1,5 +1,5 @@
 // The line report's one-line text, the latency the scan must allow for, and the warning.
-#include "SerialLineReport.h"
+#include "transport/SerialLineReport.h"
 
 #include <gtest/gtest.h>
 

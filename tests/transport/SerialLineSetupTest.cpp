@@ -1,11 +1,11 @@
 // SerialLineSetup's choices against drivers that take or refuse each request (a fake that
 // answers as the kernel does), and the real ioctls on an openpty() pair.
-#include "SerialLineSetup.h"
-#include "IoctlSerialDriver.h"
-#include "ModbusClient.h"
-#include "RtuBackend.h"
-#include "SerialSysfs.h"
-#include "TransportTestSupport.h"
+#include "transport/SerialLineSetup.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/IoctlSerialDriver.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuBackend.h"
+#include "transport/SerialSysfs.h"
 
 #include <QDir>
 #include <QFile>

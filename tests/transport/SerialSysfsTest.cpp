@@ -1,6 +1,6 @@
 // Which port is a USB adapter and its latency timer, on a fake sysfs tree laid out as the
 // kernel's (class/tty/NAME/device -> the device in the USB tree).
-#include "SerialSysfs.h"
+#include "transport/SerialSysfs.h"
 
 #include <QDir>
 #include <QFile>

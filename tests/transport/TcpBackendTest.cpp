@@ -1,10 +1,10 @@
 // TcpBackend against a tiny Modbus TCP server on 127.0.0.1 run by the test.
-#include "TcpBackend.h"
-#include "DeviceIdentification.h"
-#include "ModbusCrc.h"
-#include "RtuFrame.h"
-#include "TrafficLog.h"
-#include "TransportTestSupport.h"
+#include "transport/TcpBackend.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/DeviceIdentification.h"
+#include "transport/ModbusCrc.h"
+#include "transport/RtuFrame.h"
+#include "transport/TrafficLog.h"
 
 #include <QElapsedTimer>
 #include <QThread>

@@ -1,5 +1,5 @@
-#include "TrafficLog.h"
-#include "ModbusRequest.h"
+#include "transport/TrafficLog.h"
+#include "transport/ModbusRequest.h"
 
 #include <gtest/gtest.h>
 #include <thread>

@@ -1,6 +1,6 @@
-#include "TransportTestSupport.h"
+#include "tests/transport/TransportTestSupport.h"
 
-#include "RtuFrame.h"
+#include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -3,8 +3,8 @@
 // Helpers for the transport tests: event-loop waits, a pty pair with a scripted device on the
 // master side, and a tiny Modbus TCP server.
 
-#include "MockBackend.h"
-#include "ModbusClient.h"
+#include "transport/MockBackend.h"
+#include "transport/ModbusClient.h"
 
 #include <QByteArray>
 #include <QString>

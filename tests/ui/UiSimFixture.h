@@ -3,7 +3,7 @@
 // Widget tests against an in-process simulated bus: the model fixture plus helpers to wait for
 // a page's asynchronous refresh/write and to read a simulated register.
 
-#include "../model/DriveSimFixture.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <QRegularExpression>
 

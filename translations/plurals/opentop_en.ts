@@ -26,7 +26,7 @@
 <context>
     <name>opentop::BackupDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="102"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="111"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>Reading the settings of %n drive…</numerusform>
@@ -34,7 +34,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="152"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n setting read in %1 ms</numerusform>
@@ -42,7 +42,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="196"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="189"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>Save the %n drive that was read?</numerusform>
@@ -50,7 +50,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="220"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="213"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>Saved %n drive to %1.</numerusform>
@@ -113,7 +113,7 @@
 <context>
     <name>opentop::DeviceParameters</name>
     <message numerus="yes">
-        <location filename="../../model/session/DeviceParameters.cpp" line="282"/>
+        <location filename="../../model/session/DeviceParameters.cpp" line="283"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n write failed: %1</numerusform>
@@ -121,7 +121,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/session/DeviceParameters.cpp" line="288"/>
+        <location filename="../../model/session/DeviceParameters.cpp" line="289"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n value written and verified</numerusform>
@@ -419,7 +419,7 @@
 <context>
     <name>opentop::RecipeEditor</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n problem: the recipe cannot be saved until it is fixed.</numerusform>
@@ -427,7 +427,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>the recipe does not pass check (%n problem); nothing was saved</numerusform>
@@ -438,7 +438,7 @@
 <context>
     <name>opentop::RecipeStepsEditor</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeStepsEditor.cpp" line="120"/>
+        <location filename="../../ui/eol/RecipeStepsEditor.cpp" line="116"/>
         <source>%1 s, %n limit(s)</source>
         <translation>
             <numerusform>%1 s, %n limit</numerusform>
@@ -449,7 +449,7 @@
 <context>
     <name>opentop::RestoreDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="110"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="123"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>%n drive in the file. Choose what to restore, then Preview.</numerusform>
@@ -457,7 +457,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="278"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="246"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n setting to write</numerusform>
@@ -465,7 +465,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="364"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="332"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>Write %n setting to drive(s) %1, each verified by reading it back?</numerusform>
@@ -476,7 +476,7 @@
 <context>
     <name>opentop::RestorePlan</name>
     <message numerus="yes">
-        <location filename="../../model/files/RestorePlan.cpp" line="173"/>
+        <location filename="../../model/files/RestorePlan.cpp" line="163"/>
         <source>%n value(s) of the file may not be written to this drive; nothing written</source>
         <translation>
             <numerusform>%n value of the file may not be written to this drive; nothing written</numerusform>

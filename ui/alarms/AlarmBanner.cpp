@@ -1,7 +1,7 @@
-#include "alarms/AlarmBanner.h"
+#include "ui/alarms/AlarmBanner.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveStatusPoller.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveStatusPoller.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,9 +1,9 @@
-#include "alarms/AlarmExport.h"
+#include "ui/alarms/AlarmExport.h"
 
-#include "alarms/AlarmsPage.h"
-#include "bus/BusDrives.h"
-#include "files/OutputFile.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/io/OutputFile.h"
+#include "model/session/DeviceSession.h"
+#include "ui/alarms/AlarmsPage.h"
 
 #include <QPointer>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "alarms/AlarmHistory.h"
+#include "model/alarms/AlarmHistory.h"
 
 #include <QObject>
 #include <QVector>

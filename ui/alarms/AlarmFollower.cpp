@@ -1,8 +1,8 @@
-#include "alarms/AlarmFollower.h"
+#include "ui/alarms/AlarmFollower.h"
 
-#include "bus/DriveStatusPoller.h"
-#include "monitor/MonitorHub.h"
-#include "widgets/StaleLook.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/monitor/MonitorHub.h"
+#include "ui/widgets/StaleLook.h"
 
 namespace opentop {
 

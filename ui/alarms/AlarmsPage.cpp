@@ -1,10 +1,10 @@
-#include "alarms/AlarmsPage.h"
+#include "ui/alarms/AlarmsPage.h"
 
-#include "alarms/AlarmFollower.h"
-#include "bus/DriveName.h"
-#include "groups/GroupWriteCheck.h"
-#include "session/DeviceSession.h"
-#include "widgets/StaleLook.h"
+#include "model/bus/DriveName.h"
+#include "model/session/DeviceSession.h"
+#include "ui/alarms/AlarmFollower.h"
+#include "ui/groups/GroupWriteCheck.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>

@@ -1,10 +1,10 @@
-#include "bus/BusListMenu.h"
+#include "ui/bus/BusListMenu.h"
 
-#include "bus/BusDrives.h"
-#include "bus/BusPanel.h"
-#include "bus/DriveLineDialog.h"
-#include "bus/DriveName.h"
-#include "bus/VariantMenu.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveName.h"
+#include "ui/bus/BusPanel.h"
+#include "ui/bus/DriveLineDialog.h"
+#include "ui/bus/VariantMenu.h"
 
 #include <QInputDialog>
 #include <QLineEdit>

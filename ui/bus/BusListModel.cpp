@@ -1,8 +1,8 @@
-#include "bus/BusListModel.h"
+#include "ui/bus/BusListModel.h"
 
-#include "profile/ProfileRegistry.h"
-#include "widgets/StaleLook.h"
-#include "widgets/StatusLight.h"
+#include "model/profile/ProfileRegistry.h"
+#include "ui/widgets/StaleLook.h"
+#include "ui/widgets/StatusLight.h"
 
 #include <QBrush>
 #include <QColor>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "bus/DriveStatusPoller.h"
-#include "session/DeviceInfo.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/session/DeviceInfo.h"
 
 #include <QAbstractTableModel>
 #include <QColor>

@@ -1,8 +1,8 @@
-#include "bus/BusOverview.h"
+#include "ui/bus/BusOverview.h"
 
-#include "bus/BusDrives.h"
-#include "bus/BusOverviewModel.h"
-#include "monitor/MonitorHub.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "ui/bus/BusOverviewModel.h"
 
 #include <QHeaderView>
 #include <QLabel>

@@ -1,10 +1,10 @@
-#include "bus/BusOverviewModel.h"
+#include "ui/bus/BusOverviewModel.h"
 
-#include "bus/BusDrives.h"
-#include "monitor/MonitorHub.h"
-#include "profile/RoleEvaluator.h"
-#include "session/DeviceSession.h"
-#include "widgets/StaleLook.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/session/DeviceSession.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QBrush>
 #include <QColor>

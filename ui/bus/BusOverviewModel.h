@@ -1,7 +1,7 @@
 #pragma once
 
-#include "monitor/DeviceMonitor.h"
-#include "monitor/Freshness.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/session/Freshness.h"
 
 #include <QAbstractTableModel>
 #include <QHash>

@@ -1,16 +1,16 @@
-#include "bus/BusPanel.h"
+#include "ui/bus/BusPanel.h"
 
-#include "ModbusClient.h"
-#include "bus/BusDrives.h"
-#include "bus/BusListMenu.h"
-#include "bus/BusListModel.h"
-#include "bus/BusScanner.h"
-#include "bus/DriveLineDialog.h"
-#include "bus/DriveStatusPoller.h"
-#include "bus/FixedLineHint.h"
-#include "bus/LineFormatHint.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceIdentifier.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusScanner.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/bus/FixedLineHint.h"
+#include "model/bus/LineFormatHint.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceIdentifier.h"
+#include "transport/ModbusClient.h"
+#include "ui/bus/BusListMenu.h"
+#include "ui/bus/BusListModel.h"
+#include "ui/bus/DriveLineDialog.h"
 
 #include <QAction>
 #include <QHBoxLayout>

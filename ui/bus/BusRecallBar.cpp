@@ -1,9 +1,9 @@
-#include "bus/BusRecallBar.h"
+#include "ui/bus/BusRecallBar.h"
 
-#include "bus/BusDrives.h"
-#include "bus/BusMemory.h"
-#include "session/DeviceSession.h"
-#include "widgets/BarHideButton.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusMemory.h"
+#include "model/session/DeviceSession.h"
+#include "ui/widgets/BarHideButton.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

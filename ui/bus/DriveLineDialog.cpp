@@ -1,10 +1,10 @@
-#include "bus/DriveLineDialog.h"
+#include "ui/bus/DriveLineDialog.h"
 
-#include "ModbusClient.h"
-#include "bus/BusDrives.h"
-#include "bus/LineFormatHint.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceInfo.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/LineFormatHint.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceInfo.h"
+#include "transport/ModbusClient.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -1,7 +1,7 @@
-#include "bus/VariantMenu.h"
+#include "ui/bus/VariantMenu.h"
 
-#include "bus/BusDrives.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QActionGroup>
 #include <QCoreApplication>

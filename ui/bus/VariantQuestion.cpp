@@ -1,7 +1,7 @@
-#include "bus/VariantQuestion.h"
+#include "ui/bus/VariantQuestion.h"
 
-#include "bus/BusDrives.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QHash>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/VariantNeed.h"
+#include "model/bus/VariantNeed.h"
 
 #include <QStringList>
 #include <QVector>

@@ -1,10 +1,10 @@
-#include "connection/ConnectionDialog.h"
+#include "ui/connection/ConnectionDialog.h"
 
-#include "SerialPortList.h"
-#include "bus/BusSpec.h"
-#include "connection/DriveFormatsField.h"
-#include "connection/SerialLineFields.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusSpec.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/SerialPortList.h"
+#include "ui/connection/DriveFormatsField.h"
+#include "ui/connection/SerialLineFields.h"
 
 #include <QButtonGroup>
 #include <QComboBox>

@@ -1,5 +1,5 @@
 // ConnectionDialog::explainOpenError: kept apart from the dialog's layout code.
-#include "connection/ConnectionDialog.h"
+#include "ui/connection/ConnectionDialog.h"
 
 #include <QStringList>
 

@@ -1,7 +1,7 @@
-#include "connection/DriveFormatsField.h"
+#include "ui/connection/DriveFormatsField.h"
 
-#include "bus/LineFormatHint.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/LineFormatHint.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QFormLayout>
 #include <QHBoxLayout>

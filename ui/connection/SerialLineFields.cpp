@@ -1,4 +1,4 @@
-#include "connection/SerialLineFields.h"
+#include "ui/connection/SerialLineFields.h"
 
 #include <QCheckBox>
 #include <QComboBox>

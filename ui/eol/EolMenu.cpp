@@ -1,11 +1,11 @@
-#include "eol/EolMenu.h"
+#include "ui/eol/EolMenu.h"
 
-#include "access/StationAccess.h"
-#include "eol/GoldenMeasureButton.h"
-#include "eol/IdentityDialog.h"
-#include "eol/RecipeApproveButton.h"
-#include "eol/RecipeEditor.h"
-#include "eol/ResultsBrowser.h"
+#include "model/access/StationAccess.h"
+#include "ui/eol/GoldenMeasureButton.h"
+#include "ui/eol/IdentityDialog.h"
+#include "ui/eol/RecipeApproveButton.h"
+#include "ui/eol/RecipeEditor.h"
+#include "ui/eol/ResultsBrowser.h"
 
 #include <QAction>
 #include <QMenu>

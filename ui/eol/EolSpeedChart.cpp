@@ -1,4 +1,4 @@
-#include "eol/EolSpeedChart.h"
+#include "ui/eol/EolSpeedChart.h"
 
 #include <QChart>
 #include <QChartView>

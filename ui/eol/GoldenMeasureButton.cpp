@@ -1,10 +1,10 @@
-#include "eol/GoldenMeasureButton.h"
+#include "ui/eol/GoldenMeasureButton.h"
 
-#include "ModbusClient.h"
-#include "bus/BusDrives.h"
-#include "eol/GoldenMeasure.h"
-#include "eol/RecipeFile.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusDrives.h"
+#include "model/eol/GoldenMeasure.h"
+#include "model/eol/RecipeFile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusClient.h"
 
 #include <QJsonDocument>
 #include <QMessageBox>
@@ -107,7 +107,9 @@ void GoldenMeasureButton::run(const Recipe& recipe)
     m_run->start(EolStepRunner::Timing(), [this, title](const GoldenMeasure::Outcome& o) {
         if (m_progress)
             m_progress->close();
-        m_run->deleteLater();
+        // Not running from here on, though deleted later: a second click starts a new run.
+        m_run.data()->deleteLater();
+        m_run.clear();
         QString stops;
         for (const QString& d : o.unconfirmedStops)
             stops += QLatin1Char('\n') + tr("%1 is not confirmed stopped.").arg(d);

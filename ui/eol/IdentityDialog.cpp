@@ -1,6 +1,6 @@
-#include "eol/IdentityDialog.h"
+#include "ui/eol/IdentityDialog.h"
 
-#include "access/StationAccess.h"
+#include "model/access/StationAccess.h"
 
 #include <QDialogButtonBox>
 #include <QFormLayout>

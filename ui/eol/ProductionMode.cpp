@@ -1,9 +1,9 @@
-#include "eol/ProductionMode.h"
+#include "ui/eol/ProductionMode.h"
 
-#include "access/StationAccess.h"
-#include "eol/EolStation.h"
-#include "eol/IdentityDialog.h"
-#include "eol/ProductionView.h"
+#include "model/access/StationAccess.h"
+#include "model/station/EolStation.h"
+#include "ui/eol/IdentityDialog.h"
+#include "ui/eol/ProductionView.h"
 
 #include <QAction>
 #include <QBoxLayout>

@@ -1,13 +1,13 @@
-#include "eol/ProductionView.h"
+#include "ui/eol/ProductionView.h"
 
-#include "access/StationAccess.h"
-#include "eol/EolSpeedChart.h"
-#include "eol/EolStation.h"
-#include "eol/IdentityDialog.h"
-#include "eol/StationActions.h"
-#include "eol/StationFigures.h"
-#include "eol/StationLogin.h"
-#include "profile/ProfileRegistry.h"
+#include "model/access/StationAccess.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/station/EolStation.h"
+#include "ui/eol/EolSpeedChart.h"
+#include "ui/eol/IdentityDialog.h"
+#include "ui/eol/StationActions.h"
+#include "ui/eol/StationFigures.h"
+#include "ui/eol/StationLogin.h"
 
 #include <QApplication>
 #include <QDateTime>

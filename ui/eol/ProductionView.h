@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eol/UnitRecord.h"
+#include "model/eol/UnitRecord.h"
 
 #include <QElapsedTimer>
 #include <QWidget>

@@ -1,8 +1,8 @@
-#include "eol/RecipeApproveButton.h"
+#include "ui/eol/RecipeApproveButton.h"
 
-#include "access/StationAccess.h"
-#include "eol/IdentityDialog.h"
-#include "eol/RecipeFile.h"
+#include "model/access/StationAccess.h"
+#include "model/eol/RecipeFile.h"
+#include "ui/eol/IdentityDialog.h"
 
 #include <QDir>
 #include <QMessageBox>

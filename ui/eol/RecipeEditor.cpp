@@ -1,14 +1,15 @@
-#include "eol/RecipeEditor.h"
+#include "ui/eol/RecipeEditor.h"
 
-#include "bus/BusDrives.h"
-#include "eol/Recipe.h"
-#include "eol/RecipeBuilder.h"
-#include "eol/RecipeFile.h"
-#include "eol/RecipePositionForm.h"
-#include "files/BackupFile.h"
-#include "files/BackupReader.h"
-#include "profile/ProfileRegistry.h"
-#include "widgets/ClearOfStopAll.h"
+#include "model/bus/BusDrives.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/RecipeBuilder.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/RecipeFromDrives.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "ui/eol/RecipePositionForm.h"
+#include "ui/widgets/ClearOfStopAll.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -330,63 +331,49 @@ void RecipeEditor::newFromDrives(const QVector<int>& ids, const QString& product
                                  const QString& revision, std::function<void(bool, QString)> done)
 {
     BusDrives* drives = m_drives ? m_drives() : nullptr;
+    QVector<RecipeFromDrives::Golden> golden;
     for (int id : ids) {
-        if (!drives || !drives->session(id)) {
+        DeviceSession* session = drives ? drives->session(id) : nullptr;
+        if (!session) {
             done(false, tr("machine number %1 is not a known drive on the bus; scan the bus first")
                             .arg(id));
             return;
         }
+        // A variant the person chose for a drive that does not report it counts as stated.
+        const QString reported =
+            RecipeFromDrives::reportedVariant(session->profile(), drives->info(id));
+        golden.append({id, reported, reported.isEmpty() ? session->variant() : QString()});
     }
     auto* progress = new QProgressDialog(tr("Reading the golden unit's settings…"), tr("Cancel"), 0,
                                          int(ids.size()), this);
     progress->setWindowModality(Qt::WindowModal);
     progress->setMinimumDuration(0);
-    auto devices = std::make_shared<QVector<BackupDevice>>();
-    auto next = std::make_shared<std::function<void(int)>>();
-    QPointer<RecipeEditor> self(this);
-    // Holds itself weakly (a strong self-capture would never be freed); each read's callback
-    // holds it until the next drive is asked.
-    *next = [=, weak = std::weak_ptr<std::function<void(int)>>(next)](int i) {
-        const auto again = weak.lock();
-        if (!self || !again)
-            return;
-        if (progress->wasCanceled()) {
-            progress->deleteLater();
-            done(false, tr("cancelled: no recipe was made"));
-            return;
-        }
-        if (i == ids.size()) {
-            progress->deleteLater();
-            QString error;
-            const std::optional<Recipe> recipe =
-                RecipeBuilder(ProfileRegistry::builtIn())
-                    .fromDevices(*devices, product, revision, &error);
-            if (!recipe) {
-                done(false, error);
-                return;
-            }
-            m_path.clear();
-            setDocument(RecipeFile::toObject(*recipe));
-            done(true, QString());
-            return;
-        }
-        progress->setValue(i);
-        DeviceSession* session = drives->session(ids.at(i));
-        auto* reader = new BackupReader(session, this);
-        reader->read([=](const BackupReader::Result& r) { // `again` keeps the chain alive
-            reader->deleteLater();
-            if (!r.ok) {
-                progress->deleteLater();
-                done(false,
-                     tr("%1: %2").arg(r.device.title(),
-                                      (r.failures + r.disallowed).join(QStringLiteral("; "))));
-                return;
-            }
-            *devices << r.device;
-            (*again)(i + 1);
-        });
-    };
-    (*next)(0);
+    auto* make = new RecipeFromDrives(
+        drives->client(), ProfileRegistry::builtIn(),
+        [drives = QPointer<BusDrives>(drives)](int slave, QString* error) -> DeviceSession* {
+            DeviceSession* session = drives ? drives->session(slave) : nullptr;
+            if (!session)
+                *error = tr("machine number %1 is not on the bus").arg(slave);
+            return session;
+        },
+        this);
+    connect(make, &RecipeFromDrives::driveStarted, progress,
+            [progress](int, int index, int) { progress->setValue(index); });
+    connect(progress, &QProgressDialog::canceled, make, &RecipeFromDrives::cancel);
+    make->start(golden, product, revision, qEnvironmentVariable("USER"),
+                [this, make, progress, done](const RecipeFromDrives::Result& r) {
+                    make->deleteLater();
+                    progress->deleteLater();
+                    if (!r.recipe) {
+                        done(false, r.failure == RecipeFromDrives::Failure::Cancelled
+                                        ? tr("cancelled: no recipe was made")
+                                        : r.problems.join(QStringLiteral("; ")));
+                        return;
+                    }
+                    m_path.clear();
+                    setDocument(RecipeFile::toObject(*r.recipe));
+                    done(true, QString());
+                });
 }
 
 void RecipeEditor::chooseOpen()

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eol/RecipeChecker.h"
+#include "model/eol/RecipeChecker.h"
 
 #include <QDialog>
 #include <QJsonObject>

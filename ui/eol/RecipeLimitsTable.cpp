@@ -1,7 +1,7 @@
-#include "eol/RecipeLimitsTable.h"
+#include "ui/eol/RecipeLimitsTable.h"
 
-#include "eol/RecipeNumberText.h"
-#include "profile/Profile.h"
+#include "model/profile/Profile.h"
+#include "ui/eol/RecipeNumberText.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

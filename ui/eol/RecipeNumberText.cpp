@@ -1,4 +1,4 @@
-#include "eol/RecipeNumberText.h"
+#include "ui/eol/RecipeNumberText.h"
 
 #include <QLocale>
 

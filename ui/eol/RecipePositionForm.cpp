@@ -1,12 +1,12 @@
-#include "eol/RecipePositionForm.h"
+#include "ui/eol/RecipePositionForm.h"
 
-#include "eol/RecipeStepsEditor.h"
+#include "ui/eol/RecipeStepsEditor.h"
 
-#include "files/BackupReader.h"
-#include "profile/Profile.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
-#include "profile/ValueContext.h"
+#include "model/files/BackupReader.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "model/profile/ValueContext.h"
 
 #include <QComboBox>
 #include <QFormLayout>

@@ -1,8 +1,11 @@
-#include "eol/RecipeStepsEditor.h"
+#include "ui/eol/RecipeStepsEditor.h"
 
-#include "eol/RecipeLimitsTable.h"
-#include "eol/RecipeNumberText.h"
-#include "profile/Profile.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/RecipeStepKinds.h"
+
+#include "model/profile/Profile.h"
+#include "ui/eol/RecipeLimitsTable.h"
+#include "ui/eol/RecipeNumberText.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -79,25 +82,18 @@ RecipeStepsEditor::RecipeStepsEditor(QWidget* parent)
 
 QStringList RecipeStepsEditor::types()
 {
-    return {QStringLiteral("priority"), QStringLiteral("select"),    QStringLiteral("speed"),
-            QStringLiteral("start"),    QStringLiteral("waitSpeed"), QStringLiteral("hold"),
-            QStringLiteral("stop"),     QStringLiteral("noAlarm"),   QStringLiteral("read")};
+    return Recipe::stepTypeNames(); // the step table's, in its order
 }
 
 QString RecipeStepsEditor::typeText(const QString& type)
 {
-    static const QHash<QString, const char*> texts{
-        {QStringLiteral("priority"), QT_TR_NOOP("Take communication priority")},
-        {QStringLiteral("select"), QT_TR_NOOP("Select running data")},
-        {QStringLiteral("speed"), QT_TR_NOOP("Set the speed command")},
-        {QStringLiteral("start"), QT_TR_NOOP("Start")},
-        {QStringLiteral("waitSpeed"), QT_TR_NOOP("Wait for the speed")},
-        {QStringLiteral("hold"), QT_TR_NOOP("Hold and measure")},
-        {QStringLiteral("stop"), QT_TR_NOOP("Stop")},
-        {QStringLiteral("noAlarm"), QT_TR_NOOP("No alarm or warning")},
-        {QStringLiteral("read"), QT_TR_NOOP("Read and compare")}};
-    const auto it = texts.constFind(type);
-    return it == texts.cend() ? tr("(unknown step: %1)").arg(type) : tr(it.value());
+    const RecipeStepKinds::Kind* kind = RecipeStepKinds::of(type);
+    if (!kind)
+        return tr("(unknown step: %1)").arg(type);
+    QString title = RecipeStepKinds::title(kind->type);
+    if (!title.isEmpty())
+        title[0] = title[0].toUpper(); // a list entry starts with a capital
+    return title;
 }
 
 QString RecipeStepsEditor::summary(const QJsonObject& s)
@@ -263,56 +259,64 @@ void RecipeStepsEditor::showDetail()
     const QJsonObject step = m_steps.at(row).toObject();
     const QString type = step.value(kType).toString();
     m_detail->setTitle(tr("Step %1: %2").arg(row + 1).arg(typeText(type)));
+    // The fields are the step table's (RecipeStepKinds): one widget per kind of value.
     const QString speedUnit = step.value(kUnit).toString();
-    if (type == QLatin1String("select")) {
-        auto* spno = new QSpinBox(m_fields);
-        spno->setRange(1, 8);
-        spno->setPrefix(QStringLiteral("SPno"));
-        spno->setValue(step.value(QStringLiteral("spno")).toInt(1));
-        connect(spno, &QSpinBox::valueChanged, this,
-                [this](int v) { setField(QStringLiteral("spno"), v); });
-        form->addRow(tr("Running data:"), spno);
-    } else if (type == QLatin1String("speed")) {
-        addNumberField(form, tr("Speed command:"), QStringLiteral("speed"), speedUnit);
-        addTextField(form, tr("Unit:"), kUnit, tr("the speed command's unit"));
-    } else if (type == QLatin1String("start")) {
-        auto* direction = new QComboBox(m_fields);
-        direction->addItem(tr("CW"), QStringLiteral("cw"));
-        direction->addItem(tr("CCW"), QStringLiteral("ccw"));
-        direction->setCurrentIndex(
-            std::max(0, direction->findData(step.value(QStringLiteral("direction")).toString())));
-        connect(direction, &QComboBox::currentIndexChanged, this, [this, direction] {
-            setField(QStringLiteral("direction"), direction->currentData().toString());
-        });
-        form->addRow(tr("Direction:"), direction);
-    } else if (type == QLatin1String("waitSpeed")) {
-        addNumberField(form, tr("Target speed:"), QStringLiteral("target"), speedUnit,
-                       tr("empty: the drive's own target speed"));
-        addNumberField(form, tr("Tolerance (±):"), QStringLiteral("tolerance"), speedUnit);
-        addTextField(form, tr("Unit:"), kUnit, tr("the speed's unit"));
-        addNumberField(form, tr("Within:"), QStringLiteral("timeout"), tr("s"));
-    } else if (type == QLatin1String("hold")) {
-        addNumberField(form, tr("Duration:"), QStringLiteral("duration"), tr("s"));
-        auto* limits = new RecipeLimitsTable(m_profile, step.value(kLimits).toArray(), m_fields);
-        connect(limits, &RecipeLimitsTable::changed, this,
-                [this, limits] { setField(kLimits, limits->limits()); });
-        form->addRow(limits);
-    } else if (type == QLatin1String("stop")) {
-        addNumberField(form, tr("Deceleration time:"), QStringLiteral("deceleration"), tr("s"),
-                       tr("empty: the drive's setting"));
-        addNumberField(form, tr("Margin:"), QStringLiteral("margin"), tr("s"));
-    } else if (type == QLatin1String("read")) {
-        addParameterField(form, kParameter);
-        addNumberField(form, tr("Lower limit:"), QStringLiteral("lower"), QString(),
-                       tr("empty: none"));
-        addNumberField(form, tr("Upper limit:"), QStringLiteral("upper"), QString(),
-                       tr("empty: none"));
-        addTextField(form, tr("Unit:"), kUnit, tr("the value's unit"));
-        addTextField(form, tr("Or equals:"), QStringLiteral("equals"),
-                     tr("the expected text, instead of limits"));
-    } else {
-        form->addRow(new QLabel(tr("This step has no settings."), m_fields));
+    const RecipeStepKinds::Kind* kind = RecipeStepKinds::of(type);
+    using FieldKind = RecipeStepKinds::Field::Kind;
+    for (const RecipeStepKinds::Field& f : kind ? kind->fields : QVector<RecipeStepKinds::Field>()) {
+        const QString key = QString::fromLatin1(f.key);
+        const QString label = RecipeStepKinds::fieldLabel(f);
+        switch (f.kind) {
+        case FieldKind::Integer: {
+            auto* spin = new QSpinBox(m_fields);
+            spin->setObjectName(QStringLiteral("step_") + key);
+            spin->setRange(int(f.min), int(f.max));
+            if (key == QLatin1String("spno"))
+                spin->setPrefix(QStringLiteral("SPno"));
+            spin->setValue(step.value(key).toInt(int(f.min)));
+            connect(spin, &QSpinBox::valueChanged, this,
+                    [this, key](int v) { setField(key, v); });
+            form->addRow(label, spin);
+            break;
+        }
+        case FieldKind::Number:
+            addNumberField(form, label, key,
+                           QLatin1String(f.unit) == QLatin1String("s")
+                               ? tr("s")
+                               : (type == QLatin1String("read") ? QString() : speedUnit),
+                           RecipeStepKinds::fieldEmpty(f));
+            break;
+        case FieldKind::Direction: {
+            auto* direction = new QComboBox(m_fields);
+            direction->setObjectName(QStringLiteral("step_") + key);
+            direction->addItem(tr("CW"), QStringLiteral("cw"));
+            direction->addItem(tr("CCW"), QStringLiteral("ccw"));
+            direction->setCurrentIndex(
+                std::max(0, direction->findData(step.value(key).toString())));
+            connect(direction, &QComboBox::currentIndexChanged, this, [this, direction, key] {
+                setField(key, direction->currentData().toString());
+            });
+            form->addRow(label, direction);
+            break;
+        }
+        case FieldKind::Unit:
+        case FieldKind::Text:
+            addTextField(form, label, key, RecipeStepKinds::fieldEmpty(f));
+            break;
+        case FieldKind::Parameter:
+            addParameterField(form, key);
+            break;
+        case FieldKind::Limits: {
+            auto* limits = new RecipeLimitsTable(m_profile, step.value(kLimits).toArray(), m_fields);
+            connect(limits, &RecipeLimitsTable::changed, this,
+                    [this, limits] { setField(kLimits, limits->limits()); });
+            form->addRow(limits);
+            break;
+        }
+        }
     }
+    if (!kind || kind->fields.isEmpty())
+        form->addRow(new QLabel(tr("This step has no settings."), m_fields));
     m_filling = false;
 }
 

@@ -1,14 +1,14 @@
-#include "eol/ResultsBrowser.h"
+#include "ui/eol/ResultsBrowser.h"
 
-#include "CertificatePdf.h"
-#include "eol/CertificateHtml.h"
-#include "eol/ResultCsv.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultUrl.h"
-#include "eol/ResultWriter.h"
-#include "eol/YieldReport.h"
-#include "widgets/ClearOfStopAll.h"
+#include "model/eol/CertificateHtml.h"
+#include "model/eol/ResultCsv.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultUrl.h"
+#include "model/eol/ResultWriter.h"
+#include "model/eol/YieldReport.h"
+#include "report/CertificatePdf.h"
+#include "ui/widgets/ClearOfStopAll.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,9 +1,9 @@
-#include "eol/StationActions.h"
+#include "ui/eol/StationActions.h"
 
-#include "access/AccessPolicy.h"
-#include "access/StationAccess.h"
-#include "eol/EolStation.h"
-#include "eol/IdentityDialog.h"
+#include "model/access/AccessPolicy.h"
+#include "model/access/StationAccess.h"
+#include "model/station/EolStation.h"
+#include "ui/eol/IdentityDialog.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

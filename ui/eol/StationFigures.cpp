@@ -1,8 +1,8 @@
-#include "eol/StationFigures.h"
+#include "ui/eol/StationFigures.h"
 
-#include "eol/EolStation.h"
-#include "eol/StationYield.h"
-#include "eol/YieldReport.h"
+#include "model/eol/StationYield.h"
+#include "model/eol/YieldReport.h"
+#include "model/station/EolStation.h"
 
 #include <QDateTime>
 

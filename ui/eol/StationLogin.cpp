@@ -1,7 +1,7 @@
-#include "eol/StationLogin.h"
+#include "ui/eol/StationLogin.h"
 
-#include "access/StationAccess.h"
-#include "eol/EolStation.h"
+#include "model/access/StationAccess.h"
+#include "model/station/EolStation.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

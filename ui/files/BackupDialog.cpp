@@ -1,12 +1,12 @@
-#include "files/BackupDialog.h"
+#include "ui/files/BackupDialog.h"
 
-#include "bus/BusDrives.h"
-#include "bus/VariantQuestion.h"
-#include "files/BackupFile.h"
-#include "files/BackupReader.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
-#include "widgets/ClearOfStopAll.h"
+#include "model/bus/BusDrives.h"
+#include "model/files/BackupFile.h"
+#include "model/files/DriveBatchReader.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "ui/bus/VariantQuestion.h"
+#include "ui/widgets/ClearOfStopAll.h"
 
 #include <QDateTime>
 #include <QHBoxLayout>
@@ -30,6 +30,17 @@ BackupDialog::BackupDialog(BusDrives* drives, const ConnectionSettings& connecti
     , m_saveRead(new QPushButton(tr("&Save the drives read")))
     , m_close(new QPushButton(tr("C&lose")))
 {
+    m_reader = new DriveBatchReader(
+        [this](int slave, QString* error) -> DeviceSession* {
+            DeviceSession* session = m_drives ? m_drives->session(slave) : nullptr;
+            if (!session)
+                *error = tr("drive %1: not identified, nothing read").arg(slave);
+            return session;
+        },
+        this);
+    connect(m_reader, &DriveBatchReader::driveStarted, this,
+            [this](int slave, int, int) { driveStarted(slave); });
+    connect(m_reader, &DriveBatchReader::driveFinished, this, &BackupDialog::driveFinished);
     setWindowTitle(tr("Back up drives"));
     m_table->setHorizontalHeaderLabels(
         {tr("Machine number"), tr("Model"), tr("Progress"), tr("Result")});
@@ -74,11 +85,9 @@ void BackupDialog::startBackup(const QVector<int>& slaves, const QString& path)
     }
     m_slaves = slaves;
     m_path = path;
-    m_next = 0;
     m_read.clear();
     m_failed.clear();
     m_problems.clear();
-    m_cancel = false;
     m_saved = false;
     m_running = true;
     m_saveRead->setEnabled(false);
@@ -100,14 +109,15 @@ void BackupDialog::startBackup(const QVector<int>& slaves, const QString& path)
     m_total->setValue(0);
     m_total->setFormat(tr("%v of %m drives"));
     showMessage(tr("Reading the settings of %n drive(s)…", nullptr, int(slaves.size())), false);
-    readNext();
+    m_reader->start(slaves, {},
+                    [this](const QVector<DriveBatchReader::Drive>&) { finishReading(); });
 }
 
 void BackupDialog::cancel()
 {
     if (!m_running)
         return;
-    m_cancel = true;
+    m_reader->cancel();
     m_cancelButton->setEnabled(false);
     showMessage(tr("Stopping after the drive being read…"), false);
 }
@@ -120,59 +130,42 @@ void BackupDialog::reject()
         QDialog::reject();
 }
 
-void BackupDialog::readNext()
+void BackupDialog::driveStarted(int slave)
 {
-    if (m_next >= m_slaves.size() || m_cancel) {
-        // Every drive not reached is reported, so that a cancelled backup hides nothing.
-        for (int i = m_next; i < m_slaves.size(); ++i) {
-            m_failed << m_slaves.at(i);
-            setResult(m_slaves.at(i), tr("Not read (cancelled)"), true);
-        }
-        m_next = int(m_slaves.size());
-        finishReading();
-        return;
-    }
-    const int slave = m_slaves.at(m_next++);
-    DeviceSession* session = m_drives ? m_drives->session(slave) : nullptr;
-    if (!session) {
-        m_failed << slave;
-        m_problems << tr("drive %1: not identified, nothing read").arg(slave);
-        setResult(slave, tr("Not identified"), true);
-        m_total->setValue(m_next);
-        readNext();
-        return;
-    }
     const int row = rowOf(slave);
     if (auto* bar = qobject_cast<QProgressBar*>(m_table->cellWidget(row, Progress)))
         bar->setRange(0, 0); // busy: the reader reports no steps
     setResult(slave, tr("Reading…"), false);
-    m_reader = new BackupReader(session, this);
-    m_reader->read([this, slave, row](const BackupReader::Result& r) {
-        m_reader->deleteLater();
-        if (auto* bar = qobject_cast<QProgressBar*>(m_table->cellWidget(row, Progress))) {
-            bar->setRange(0, 1);
-            bar->setValue(r.ok ? 1 : 0);
-        }
-        const QString title = r.device.title();
-        if (r.ok) {
-            m_read << r.device;
-            setResult(slave,
-                      tr("%n setting(s) read in %1 ms", nullptr, r.parameters).arg(r.elapsedMs),
-                      false);
-        } else {
-            m_failed << slave;
-            for (const QString& f : r.failures)
-                m_problems << tr("%1: cannot read %2").arg(title, f);
-            for (const QString& d : r.disallowed)
-                m_problems << tr("%1 holds a value its profile does not allow, so the backup "
-                                 "could not be restored: %2")
-                                  .arg(title, d);
-            setResult(slave, r.failures.isEmpty() ? tr("Value not allowed") : tr("Read failed"),
-                      true);
-        }
-        m_total->setValue(m_next);
-        readNext();
-    });
+}
+
+void BackupDialog::driveFinished(const DriveBatchReader::Drive& drive)
+{
+    const int slave = drive.slave;
+    if (auto* bar = qobject_cast<QProgressBar*>(m_table->cellWidget(rowOf(slave), Progress))) {
+        bar->setRange(0, 1);
+        bar->setValue(drive.ok() ? 1 : 0);
+    }
+    m_total->setValue(m_total->value() + 1);
+    if (drive.ok()) {
+        m_read << drive.read.device;
+        setResult(slave,
+                  tr("%n setting(s) read in %1 ms", nullptr, drive.read.parameters)
+                      .arg(drive.read.elapsedMs),
+                  false);
+        return;
+    }
+    m_failed << slave;
+    // Every drive not reached is reported, so that a cancelled backup hides nothing.
+    if (!drive.attempted) {
+        setResult(slave, tr("Not read (cancelled)"), true);
+        return;
+    }
+    m_problems << drive.problems();
+    setResult(slave,
+              !drive.error.isEmpty()          ? tr("Not identified")
+              : drive.read.failures.isEmpty() ? tr("Value not allowed")
+                                              : tr("Read failed"),
+              true);
 }
 
 void BackupDialog::finishReading()

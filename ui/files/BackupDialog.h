@@ -1,15 +1,15 @@
 #pragma once
 
-#include "ConnectionSettings.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QDialog>
 #include <QPointer>
 #include <QStringList>
 #include <QVector>
 
-#include "bus/BusDrives.h"
-#include "files/BackupDevice.h"
-#include "files/BackupReader.h"
+#include "model/bus/BusDrives.h"
+#include "model/files/BackupDevice.h"
+#include "model/files/DriveBatchReader.h"
 
 class QLabel;
 class QProgressBar;
@@ -58,7 +58,8 @@ signals:
     void backupFinished(bool saved); // after saving, or when the user has to decide
 
 private:
-    void readNext();
+    void driveStarted(int slave);
+    void driveFinished(const DriveBatchReader::Drive& drive);
     void finishReading();
     bool save();
     int rowOf(int slave) const;
@@ -67,15 +68,13 @@ private:
 
     QPointer<BusDrives> m_drives;
     ConnectionSettings m_connection;
-    QVector<int> m_slaves;
-    int m_next = 0;
     QString m_path;
     QVector<BackupDevice> m_read;
     QVector<int> m_failed;
     QStringList m_problems;
-    QPointer<BackupReader> m_reader;
+    QVector<int> m_slaves;      // in table order
+    DriveBatchReader* m_reader; // the workflow; this dialog shows it
     bool m_running = false;
-    bool m_cancel = false;
     bool m_saved = false;
     QTableWidget* m_table;
     QProgressBar* m_total;

@@ -1,7 +1,7 @@
-#include "files/BackupViewer.h"
+#include "ui/files/BackupViewer.h"
 
-#include "profile/ProfileRegistry.h"
-#include "widgets/ClearOfStopAll.h"
+#include "model/profile/ProfileRegistry.h"
+#include "ui/widgets/ClearOfStopAll.h"
 
 #include <QFileDialog>
 #include <QFileInfo>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "files/BackupFile.h"
+#include "model/files/BackupFile.h"
 
 #include <QDialog>
 #include <optional>

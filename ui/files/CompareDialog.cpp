@@ -1,11 +1,11 @@
-#include "files/CompareDialog.h"
+#include "ui/files/CompareDialog.h"
 
-#include "bus/BusDrives.h"
-#include "files/BackupReader.h"
-#include "files/Comparer.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
-#include "widgets/ClearOfStopAll.h"
+#include "model/bus/BusDrives.h"
+#include "model/files/BackupReader.h"
+#include "model/files/Comparer.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "ui/widgets/ClearOfStopAll.h"
 
 #include <QCheckBox>
 #include <QFileInfo>

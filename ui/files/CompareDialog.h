@@ -1,7 +1,7 @@
 #pragma once
 
-#include "bus/BusDrives.h"
-#include "files/CompareSide.h"
+#include "model/bus/BusDrives.h"
+#include "ui/files/CompareSide.h"
 
 #include <QDialog>
 #include <QPointer>

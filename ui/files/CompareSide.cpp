@@ -1,8 +1,8 @@
-#include "files/CompareSide.h"
+#include "ui/files/CompareSide.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveName.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QComboBox>
 #include <QFileDialog>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "files/BackupDevice.h"
-#include "files/BackupFile.h"
+#include "model/files/BackupDevice.h"
+#include "model/files/BackupFile.h"
 
 #include <QGroupBox>
 #include <QPointer>

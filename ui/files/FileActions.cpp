@@ -1,10 +1,10 @@
-#include "files/FileActions.h"
+#include "ui/files/FileActions.h"
 
-#include "bus/BusDrives.h"
-#include "files/BackupDialog.h"
-#include "files/BackupViewer.h"
-#include "files/CompareDialog.h"
-#include "files/RestoreDialog.h"
+#include "model/bus/BusDrives.h"
+#include "ui/files/BackupDialog.h"
+#include "ui/files/BackupViewer.h"
+#include "ui/files/CompareDialog.h"
+#include "ui/files/RestoreDialog.h"
 
 #include <QAction>
 #include <QDateTime>

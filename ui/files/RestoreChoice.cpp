@@ -1,9 +1,9 @@
-#include "files/RestoreChoice.h"
+#include "ui/files/RestoreChoice.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveName.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
 
 #include <QComboBox>
 #include <QHeaderView>

@@ -1,16 +1,15 @@
-#include "files/RestoreDialog.h"
+#include "ui/files/RestoreDialog.h"
 
-#include "bus/BusDrives.h"
-#include "bus/VariantQuestion.h"
-#include "files/RestoreChoice.h"
-#include "files/RestorePlanTable.h"
-#include "files/RestoreReport.h"
-#include "files/Restorer.h"
-#include "groups/GroupWriteCheck.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
-#include "widgets/ClearOfStopAll.h"
-#include "widgets/ConfirmBox.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "ui/bus/VariantQuestion.h"
+#include "ui/files/RestoreChoice.h"
+#include "ui/files/RestorePlanTable.h"
+#include "ui/files/RestoreReport.h"
+#include "ui/groups/GroupWriteCheck.h"
+#include "ui/widgets/ClearOfStopAll.h"
+#include "ui/widgets/ConfirmBox.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
@@ -29,6 +28,8 @@ using Item = RestorePlan::Item;
 RestoreDialog::RestoreDialog(BusDrives* drives, QWidget* parent)
     : QDialog(parent)
     , m_drives(drives)
+    , m_restore(new BusRestore(
+          [this](int slave) { return m_drives ? m_drives->session(slave) : nullptr; }, this))
     , m_pathEdit(new QLineEdit)
     , m_choice(new RestoreChoice)
     , m_table(new RestorePlanTable)
@@ -80,6 +81,18 @@ RestoreDialog::RestoreDialog(BusDrives* drives, QWidget* parent)
     connect(m_previewButton, &QPushButton::clicked, this, &RestoreDialog::preview);
     connect(m_writeButton, &QPushButton::clicked, this, &RestoreDialog::confirmAndWrite);
     connect(m_cancelButton, &QPushButton::clicked, this, &RestoreDialog::cancel);
+    connect(m_restore, &BusRestore::driveStarted, this, [this](int slave) {
+        showMessage((m_dryRun ? tr("Reading drive %1…") : tr("Writing drive %1…")).arg(slave),
+                    false);
+        updateButtons();
+    });
+    connect(m_restore, &BusRestore::progress, this,
+            [this](int slave, int done, int total, const QString& parameter) {
+                m_progress->setRange(0, total);
+                m_progress->setValue(done);
+                m_progress->setFormat(tr("drive %1: %2 (%v of %m)").arg(slave).arg(parameter));
+                emit progress(slave, done, total);
+            });
     connect(m_saveButton, &QPushButton::clicked, this, &RestoreDialog::chooseReportPath);
     connect(close, &QPushButton::clicked, this, &QDialog::reject);
     connect(m_choice, &RestoreChoice::changed, this, &RestoreDialog::selectionChanged);
@@ -122,15 +135,10 @@ QVector<int> RestoreDialog::fileSlaves() const
 bool RestoreDialog::refuse(const QVector<Job>& jobs)
 {
     // Every drive is checked before any is touched: a refusal writes nothing at all.
-    QVector<RestorePlan> refusals;
-    for (const Job& job : jobs) {
-        DeviceSession* session = m_drives->session(job.busSlave);
-        RestorePlan check = RestorePlan::check(session->profile(), session->variant(), job.device);
-        check.machineName = session->machineName();
-        check.slave = job.busSlave;
-        if (check.refused())
-            refusals << check;
-    }
+    QVector<BusRestore::Job> check;
+    for (const Job& job : jobs)
+        check.append({job.busSlave, job.device});
+    const QVector<RestorePlan> refusals = m_restore->check(check);
     if (refusals.isEmpty())
         return false;
     m_plans = refusals;
@@ -191,63 +199,23 @@ void RestoreDialog::start(bool dryRun)
             emit writeFinished();
         return;
     }
-    m_jobs = chosen;
-    m_next = 0;
-    m_cancel = false;
     m_written = !dryRun;
+    m_dryRun = dryRun;
     m_progress->setVisible(true);
     m_progress->setRange(0, 0);
-    runNext(dryRun);
-}
-
-void RestoreDialog::runNext(bool dryRun)
-{
-    if (m_next >= m_jobs.size()) {
+    QVector<BusRestore::Job> jobs;
+    for (const Job& job : chosen)
+        jobs.append({job.busSlave, job.device});
+    m_restore->start(jobs, dryRun, [this, dryRun](const QVector<RestorePlan>& plans) {
+        m_plans = plans;
         finish(dryRun);
-        return;
-    }
-    const Job& job = m_jobs.at(m_next++);
-    const bool stop =
-        !m_plans.isEmpty() && (m_plans.last().outcome == RestorePlan::Outcome::Communication ||
-                               m_plans.last().outcome == RestorePlan::Outcome::Interrupted);
-    DeviceSession* session = m_drives ? m_drives->session(job.busSlave) : nullptr;
-    if (stop || m_cancel || !session) {
-        // The bus failed or the user stopped: later drives are left alone, and said so.
-        RestorePlan skipped;
-        skipped.slave = job.busSlave;
-        skipped.title = job.device.title();
-        skipped.outcome = RestorePlan::Outcome::Interrupted;
-        skipped.reason = tr("not attempted");
-        m_plans << skipped;
-        runNext(dryRun);
-        return;
-    }
-    showMessage((dryRun ? tr("Reading drive %1…") : tr("Writing drive %1…")).arg(job.busSlave),
-                false);
-    m_restorer = new Restorer(session, this);
-    connect(m_restorer, &Restorer::progress, this,
-            [this, slave = job.busSlave](int done, int total, const QString& parameter) {
-                m_progress->setRange(0, total);
-                m_progress->setValue(done);
-                m_progress->setFormat(tr("drive %1: %2 (%v of %m)").arg(slave).arg(parameter));
-                emit progress(slave, done, total);
-            });
-    Restorer::Options options;
-    options.dryRun = dryRun;
-    m_restorer->start(job.device, options, [this, dryRun](const RestorePlan& plan) {
-        m_restorer->deleteLater();
-        m_restorer = nullptr;
-        m_plans << plan;
-        runNext(dryRun);
     });
     updateButtons();
 }
 
 void RestoreDialog::cancel()
 {
-    m_cancel = true;
-    if (m_restorer)
-        m_restorer->cancel();
+    m_restore->cancel();
 }
 
 void RestoreDialog::reject()

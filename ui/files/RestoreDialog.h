@@ -1,11 +1,11 @@
 #pragma once
 
-#include "bus/BusDrives.h"
-#include "files/BackupFile.h"
-#include "files/RestoreChoice.h"
-#include "files/RestorePlan.h"
-#include "files/RestorePlanTable.h"
-#include "files/Restorer.h"
+#include "model/bus/BusDrives.h"
+#include "model/files/BackupFile.h"
+#include "model/files/BusRestore.h"
+#include "model/files/RestorePlan.h"
+#include "ui/files/RestoreChoice.h"
+#include "ui/files/RestorePlanTable.h"
 
 #include <QDialog>
 #include <QPointer>
@@ -47,7 +47,7 @@ public:
     void preview(); // dry run; previewFinished() follows
     bool write();   // false when there is no current preview to write
     void cancel();  // after the write in progress has been read back
-    bool isBusy() const { return m_restorer != nullptr; }
+    bool isBusy() const { return m_restore->isRunning(); }
     bool canWrite() const { return m_previewed && !isBusy(); }
 
     const QVector<RestorePlan>& plans() const { return m_plans; }
@@ -81,7 +81,6 @@ private:
     void chooseReportPath();               // modal file dialog, then saveReport()
     bool refuse(const QVector<Job>& jobs); // true when a drive refuses the file
     void start(bool dryRun);
-    void runNext(bool dryRun);
     void finish(bool dryRun);
     void selectionChanged();
     void showMessage(const QString& text, bool error);
@@ -91,13 +90,11 @@ private:
     std::optional<BackupFile> m_file;
     QString m_path;
     QString m_error;
-    QVector<Job> m_jobs;
-    int m_next = 0;
+    BusRestore* m_restore; // the workflow; this dialog chooses, asks and shows
+    bool m_dryRun = false;
     QVector<RestorePlan> m_plans;
     bool m_previewed = false;
     bool m_written = false;
-    bool m_cancel = false;
-    QPointer<Restorer> m_restorer;
     QLineEdit* m_pathEdit;
     RestoreChoice* m_choice;
     RestorePlanTable* m_table;

@@ -1,4 +1,4 @@
-#include "files/RestorePlanTable.h"
+#include "ui/files/RestorePlanTable.h"
 
 #include <QCheckBox>
 #include <QHeaderView>

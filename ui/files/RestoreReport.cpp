@@ -1,7 +1,7 @@
-#include "files/RestoreReport.h"
+#include "ui/files/RestoreReport.h"
 
-#include "bus/DriveName.h"
-#include "files/OutputFile.h"
+#include "model/bus/DriveName.h"
+#include "model/io/OutputFile.h"
 
 #include <QDateTime>
 

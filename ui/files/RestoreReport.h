@@ -1,6 +1,6 @@
 #pragma once
 
-#include "files/RestorePlan.h"
+#include "model/files/RestorePlan.h"
 
 #include <QCoreApplication>
 #include <QVector>

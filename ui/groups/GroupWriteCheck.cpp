@@ -1,7 +1,7 @@
-#include "groups/GroupWriteCheck.h"
+#include "ui/groups/GroupWriteCheck.h"
 
-#include "bus/BusGroupTracker.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusGroupTracker.h"
+#include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
 #include <QMessageBox>

@@ -1,9 +1,9 @@
-#include "groups/GroupsView.h"
+#include "ui/groups/GroupsView.h"
 
-#include "bus/BusDrives.h"
-#include "bus/BusGroupTracker.h"
-#include "bus/GroupPlan.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusGroupTracker.h"
+#include "model/bus/GroupPlan.h"
+#include "model/session/DeviceSession.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>

@@ -1,6 +1,6 @@
-#include "help/AboutDialog.h"
+#include "ui/help/AboutDialog.h"
 
-#include "LibraryVersions.h"
+#include "transport/LibraryVersions.h"
 
 #include <QApplication>
 #include <QDialogButtonBox>

@@ -1,8 +1,8 @@
-#include "help/HelpActions.h"
+#include "ui/help/HelpActions.h"
 
-#include "help/AboutDialog.h"
-#include "help/ShortcutsDialog.h"
-#include "help/UserGuideDialog.h"
+#include "ui/help/AboutDialog.h"
+#include "ui/help/ShortcutsDialog.h"
+#include "ui/help/UserGuideDialog.h"
 
 #include <QAction>
 #include <QApplication>

@@ -1,6 +1,6 @@
-#include "help/ShortcutsDialog.h"
+#include "ui/help/ShortcutsDialog.h"
 
-#include "run/StopAllButton.h"
+#include "ui/run/StopAllButton.h"
 
 #include <QAction>
 #include <QDialogButtonBox>

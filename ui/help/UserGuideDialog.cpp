@@ -1,6 +1,6 @@
-#include "help/UserGuideDialog.h"
+#include "ui/help/UserGuideDialog.h"
 
-#include "run/StopAllButton.h"
+#include "ui/run/StopAllButton.h"
 
 #include <QDialogButtonBox>
 #include <QDir>

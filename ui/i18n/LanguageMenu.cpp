@@ -1,6 +1,6 @@
-#include "i18n/LanguageMenu.h"
+#include "ui/i18n/LanguageMenu.h"
 
-#include "i18n/Language.h"
+#include "model/i18n/Language.h"
 
 #include <QActionGroup>
 

@@ -1,13 +1,13 @@
-#include "main/BusDocks.h"
+#include "ui/main/BusDocks.h"
 
-#include "TrafficLog.h"
-#include "bus/BusDrives.h"
-#include "bus/BusListModel.h"
-#include "bus/BusOverview.h"
-#include "bus/BusPanel.h"
-#include "groups/GroupsView.h"
-#include "traffic/TrafficLogView.h"
-#include "trends/TrendPanel.h"
+#include "model/bus/BusDrives.h"
+#include "transport/TrafficLog.h"
+#include "ui/bus/BusListModel.h"
+#include "ui/bus/BusOverview.h"
+#include "ui/bus/BusPanel.h"
+#include "ui/groups/GroupsView.h"
+#include "ui/traffic/TrafficLogView.h"
+#include "ui/trends/TrendPanel.h"
 
 #include <QDockWidget>
 #include <QLabel>

@@ -1,7 +1,7 @@
-#include "main/ConnectionStatus.h"
+#include "ui/main/ConnectionStatus.h"
 
-#include "SerialLineReport.h"
-#include "widgets/StatusLight.h"
+#include "transport/SerialLineReport.h"
+#include "ui/widgets/StatusLight.h"
 
 #include <QLabel>
 #include <QMainWindow>

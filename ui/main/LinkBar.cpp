@@ -1,6 +1,6 @@
-#include "main/LinkBar.h"
+#include "ui/main/LinkBar.h"
 
-#include "widgets/BarHideButton.h"
+#include "ui/widgets/BarHideButton.h"
 
 #include <QAction>
 #include <QHBoxLayout>

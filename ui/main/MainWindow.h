@@ -1,10 +1,10 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "main/BusDocks.h"
-#include "main/ConnectionStatus.h"
-#include "main/DrivePages.h"
-#include "main/WindowGeometry.h"
+#include "transport/ConnectionSettings.h"
+#include "ui/main/BusDocks.h"
+#include "ui/main/ConnectionStatus.h"
+#include "ui/main/DrivePages.h"
+#include "ui/main/WindowGeometry.h"
 
 #include <QHash>
 #include <QMainWindow>

@@ -1,13 +1,13 @@
-#include "main/Reconnection.h"
+#include "ui/main/Reconnection.h"
 
-#include "bus/BusDrives.h"
-#include "bus/BusListModel.h"
-#include "bus/BusMemory.h"
-#include "bus/BusPanel.h"
-#include "bus/DriveStatusPoller.h"
-#include "main/LinkBar.h"
-#include "main/MainWindow.h"
-#include "workspace/DriveWorkspace.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusMemory.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "ui/bus/BusListModel.h"
+#include "ui/bus/BusPanel.h"
+#include "ui/main/LinkBar.h"
+#include "ui/main/MainWindow.h"
+#include "ui/workspace/DriveWorkspace.h"
 
 #include <QAction>
 #include <QItemSelectionModel>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "run/LinkLoss.h"
+#include "model/run/LinkLoss.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QHash>
 #include <QObject>

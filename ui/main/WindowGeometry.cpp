@@ -1,7 +1,7 @@
-#include "main/WindowGeometry.h"
+#include "ui/main/WindowGeometry.h"
 
-#include "bus/BusListModel.h"
-#include "bus/BusPanel.h"
+#include "ui/bus/BusListModel.h"
+#include "ui/bus/BusPanel.h"
 
 #include <QEvent>
 #include <QGuiApplication>

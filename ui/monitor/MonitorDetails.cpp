@@ -1,10 +1,10 @@
-#include "monitor/MonitorDetails.h"
+#include "ui/monitor/MonitorDetails.h"
 
-#include "monitor/DeviceMonitor.h"
-#include "monitor/TerminalLamps.h"
-#include "profile/RoleEvaluator.h"
-#include "session/DeviceParameters.h"
-#include "widgets/StaleLook.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/session/DeviceParameters.h"
+#include "ui/monitor/TerminalLamps.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QFormLayout>
 #include <QLabel>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "monitor/DeviceMonitor.h"
+#include "model/monitor/DeviceMonitor.h"
 
 #include <QTimer>
 #include <QWidget>

@@ -1,8 +1,8 @@
-#include "monitor/MonitorPollBar.h"
+#include "ui/monitor/MonitorPollBar.h"
 
-#include "bus/BusDrives.h"
-#include "monitor/MonitorHub.h"
-#include "widgets/StaleLook.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

@@ -1,7 +1,7 @@
-#include "monitor/MotorSpeedBox.h"
+#include "ui/monitor/MotorSpeedBox.h"
 
-#include "monitor/DeviceMonitor.h"
-#include "profile/ParameterMeta.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/profile/ParameterMeta.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>

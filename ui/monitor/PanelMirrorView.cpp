@@ -1,7 +1,7 @@
-#include "monitor/PanelMirrorView.h"
+#include "ui/monitor/PanelMirrorView.h"
 
-#include "widgets/StaleLook.h"
-#include "widgets/StatusLight.h"
+#include "ui/widgets/StaleLook.h"
+#include "ui/widgets/StatusLight.h"
 
 #include <QFontDatabase>
 #include <QGridLayout>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "monitor/PanelMirror.h"
+#include "model/monitor/PanelMirror.h"
 
 #include <QTimer>
 #include <QWidget>

@@ -1,7 +1,7 @@
-#include "monitor/TerminalLamps.h"
+#include "ui/monitor/TerminalLamps.h"
 
-#include "profile/ParameterMeta.h"
-#include "widgets/StaleLook.h"
+#include "model/profile/ParameterMeta.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QGridLayout>
 #include <QLabel>

@@ -1,12 +1,12 @@
-#include "pages/DcControllerPage.h"
+#include "ui/pages/DcControllerPage.h"
 
-#include "profile/ValueCodec.h"
-#include "run/RunLiveState.h"
-#include "session/DeviceSession.h"
-#include "session/SerialLock.h"
-#include "session/StoreTracker.h"
-#include "workspace/ParameterField.h"
-#include "workspace/PendingValues.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/SerialLock.h"
+#include "model/session/StoreTracker.h"
+#include "ui/run/RunLiveState.h"
+#include "ui/workspace/ParameterField.h"
+#include "ui/workspace/PendingValues.h"
 
 #include <QFormLayout>
 #include <QFrame>

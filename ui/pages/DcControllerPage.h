@@ -1,7 +1,7 @@
 #pragma once
 
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterPage.h"
+#include "model/session/DeviceParameters.h"
+#include "ui/workspace/ParameterPage.h"
 
 #include <QHash>
 #include <functional>

@@ -1,10 +1,10 @@
-#include "pages/EditorRegistry.h"
+#include "ui/pages/EditorRegistry.h"
 
-#include "pages/DcControllerPage.h"
-#include "pages/IoTerminalsPage.h"
-#include "pages/RunningDataPage.h"
-#include "pages/SpeedUnitsPage.h"
-#include "workspace/DriveWorkspace.h"
+#include "ui/pages/DcControllerPage.h"
+#include "ui/pages/IoTerminalsPage.h"
+#include "ui/pages/RunningDataPage.h"
+#include "ui/pages/SpeedUnitsPage.h"
+#include "ui/workspace/DriveWorkspace.h"
 
 namespace opentop {
 

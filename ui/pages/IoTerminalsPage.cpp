@@ -1,10 +1,10 @@
-#include "pages/IoTerminalsPage.h"
+#include "ui/pages/IoTerminalsPage.h"
 
-#include "profile/ValueCodec.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
-#include "workspace/ParameterField.h"
-#include "workspace/PendingValues.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "ui/workspace/ParameterField.h"
+#include "ui/workspace/PendingValues.h"
 
 #include <QFormLayout>
 #include <QGridLayout>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "profile/ValueContext.h"
-#include "workspace/ParameterPage.h"
+#include "model/profile/ValueContext.h"
+#include "ui/workspace/ParameterPage.h"
 
 #include <QHash>
 #include <optional>

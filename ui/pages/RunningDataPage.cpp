@@ -1,13 +1,13 @@
-#include "pages/RunningDataPage.h"
+#include "ui/pages/RunningDataPage.h"
 
-#include "bus/DriveName.h"
-#include "groups/GroupWriteCheck.h"
-#include "profile/ValueCodec.h"
-#include "run/RunningData.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
-#include "workspace/ParameterField.h"
-#include "workspace/PendingValues.h"
+#include "model/bus/DriveName.h"
+#include "model/profile/RunningData.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "ui/groups/GroupWriteCheck.h"
+#include "ui/workspace/ParameterField.h"
+#include "ui/workspace/PendingValues.h"
 
 #include <QGridLayout>
 #include <QLabel>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "workspace/ParameterPage.h"
+#include "ui/workspace/ParameterPage.h"
 
 #include <QHash>
 #include <QVector>

@@ -1,9 +1,9 @@
-#include "pages/SpeedUnitsPage.h"
+#include "ui/pages/SpeedUnitsPage.h"
 
-#include "profile/ValueCodec.h"
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterField.h"
-#include "workspace/PendingValues.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceParameters.h"
+#include "ui/workspace/ParameterField.h"
+#include "ui/workspace/PendingValues.h"
 
 #include <QComboBox>
 #include <QFontDatabase>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "profile/SpeedDisplay.h"
-#include "workspace/ParameterPage.h"
+#include "model/profile/SpeedDisplay.h"
+#include "ui/workspace/ParameterPage.h"
 
 #include <QHash>
 #include <QVector>

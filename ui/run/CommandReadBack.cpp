@@ -1,4 +1,4 @@
-#include "run/CommandReadBack.h"
+#include "ui/run/CommandReadBack.h"
 
 #include <QLocale>
 #include <QPointer>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "run/GroupFollowers.h"
-#include "run/RunControl.h"
+#include "model/run/GroupFollowers.h"
+#include "model/run/RunControl.h"
 
 #include <QLabel>
 #include <functional>

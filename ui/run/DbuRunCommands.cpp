@@ -1,8 +1,8 @@
-#include "run/DbuRunCommands.h"
+#include "ui/run/DbuRunCommands.h"
 
-#include "profile/RoleEvaluator.h"
-#include "run/SpnoSelector.h"
-#include "session/DeviceSession.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/session/DeviceSession.h"
+#include "ui/run/SpnoSelector.h"
 
 #include <QCoreApplication>
 #include <QGridLayout>

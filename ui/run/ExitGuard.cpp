@@ -1,9 +1,9 @@
-#include "run/ExitGuard.h"
+#include "ui/run/ExitGuard.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveStatusPoller.h"
-#include "run/ExitActions.h"
-#include "run/ExitCheck.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/run/ExitActions.h"
+#include "model/run/ExitCheck.h"
 
 #include <QHash>
 #include <QMessageBox>

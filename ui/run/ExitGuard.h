@@ -1,6 +1,6 @@
 #pragma once
 
-#include "run/ExitPlan.h"
+#include "model/run/ExitPlan.h"
 
 #include <QObject>
 #include <QPointer>

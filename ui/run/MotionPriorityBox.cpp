@@ -1,11 +1,11 @@
-#include "run/MotionPriorityBox.h"
-#include "bus/DriveName.h"
-#include "groups/GroupWriteCheck.h"
+#include "ui/run/MotionPriorityBox.h"
+#include "model/bus/DriveName.h"
+#include "ui/groups/GroupWriteCheck.h"
 
-#include "profile/RoleEvaluator.h"
-#include "run/ExitActions.h"
-#include "session/DeviceSession.h"
-#include "widgets/ConfirmBox.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/run/ExitActions.h"
+#include "model/session/DeviceSession.h"
+#include "ui/widgets/ConfirmBox.h"
 
 #include <QLabel>
 #include <QPointer>

@@ -1,12 +1,12 @@
-#include "run/RunLiveState.h"
+#include "ui/run/RunLiveState.h"
 
-#include "ModbusClient.h"
-#include "bus/BusDrives.h"
-#include "monitor/Freshness.h"
-#include "monitor/MonitorHub.h"
-#include "profile/RoleEvaluator.h"
-#include "run/RunningData.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/RunningData.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/Freshness.h"
+#include "transport/ModbusClient.h"
 
 #include <QGridLayout>
 #include <QLabel>

@@ -1,9 +1,9 @@
-#include "run/SpnoSelector.h"
+#include "ui/run/SpnoSelector.h"
 
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
-#include "run/RunningData.h"
-#include "session/DeviceSession.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/RunningData.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <QDateTime>
 #include <QLocale>

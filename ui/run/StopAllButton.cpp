@@ -1,11 +1,11 @@
-#include "run/StopAllButton.h"
+#include "ui/run/StopAllButton.h"
 
-#include "run/StopAllKeys.h"
+#include "ui/run/StopAllKeys.h"
 
-#include "bus/BusDrives.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
 
 #include <QHash>
 #include <QMessageBox>

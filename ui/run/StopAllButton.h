@@ -1,6 +1,6 @@
 #pragma once
 
-#include "run/StopAll.h"
+#include "model/run/StopAll.h"
 
 #include <QPointer>
 #include <QPushButton>

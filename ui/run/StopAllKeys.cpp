@@ -1,6 +1,6 @@
-#include "run/StopAllKeys.h"
+#include "ui/run/StopAllKeys.h"
 
-#include "run/StopAllButton.h"
+#include "ui/run/StopAllButton.h"
 
 #include <QCoreApplication>
 #include <QKeyEvent>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "run/RunControl.h"
+#include "model/run/RunControl.h"
 
 #include <QSet>
 #include <QWidget>

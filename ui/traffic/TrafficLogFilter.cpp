@@ -1,7 +1,7 @@
-#include "traffic/TrafficLogFilter.h"
+#include "ui/traffic/TrafficLogFilter.h"
 
-#include "TrafficEntry.h"
-#include "traffic/TrafficLogModel.h"
+#include "transport/TrafficEntry.h"
+#include "ui/traffic/TrafficLogModel.h"
 
 namespace opentop {
 

@@ -1,6 +1,6 @@
-#include "traffic/TrafficLogModel.h"
+#include "ui/traffic/TrafficLogModel.h"
 
-#include "RtuFrame.h"
+#include "transport/RtuFrame.h"
 
 #include <QBrush>
 #include <QColor>

@@ -1,9 +1,9 @@
-#include "traffic/TrafficLogView.h"
+#include "ui/traffic/TrafficLogView.h"
 
-#include "TrafficLog.h"
-#include "files/OutputFile.h"
-#include "traffic/TrafficLogFilter.h"
-#include "traffic/TrafficLogModel.h"
+#include "model/io/OutputFile.h"
+#include "transport/TrafficLog.h"
+#include "ui/traffic/TrafficLogFilter.h"
+#include "ui/traffic/TrafficLogModel.h"
 
 #include <QCheckBox>
 #include <QComboBox>

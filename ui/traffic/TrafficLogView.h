@@ -1,6 +1,6 @@
 #pragma once
 
-#include "traffic/TrafficStatistics.h"
+#include "model/traffic/TrafficStatistics.h"
 
 #include <QSet>
 #include <QVector>

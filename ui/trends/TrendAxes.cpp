@@ -1,6 +1,6 @@
-#include "trends/TrendAxes.h"
+#include "ui/trends/TrendAxes.h"
 
-#include "trends/TrendPoints.h"
+#include "ui/trends/TrendPoints.h"
 
 #include <QChart>
 #include <QFontMetricsF>

@@ -1,6 +1,6 @@
-#include "trends/TrendCanvas.h"
+#include "ui/trends/TrendCanvas.h"
 
-#include "trends/TrendLines.h"
+#include "ui/trends/TrendLines.h"
 
 #include <QChart>
 #include <QDateTimeAxis>

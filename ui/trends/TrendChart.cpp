@@ -1,12 +1,12 @@
-#include "trends/TrendChart.h"
+#include "ui/trends/TrendChart.h"
 
-#include "bus/BusDrives.h"
-#include "bus/DriveName.h"
-#include "monitor/MonitorHub.h"
-#include "monitor/TrendCsv.h"
-#include "trends/TrendCanvas.h"
-#include "trends/TrendChartView.h"
-#include "trends/TrendReadout.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveName.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/monitor/TrendCsv.h"
+#include "ui/trends/TrendCanvas.h"
+#include "ui/trends/TrendChartView.h"
+#include "ui/trends/TrendReadout.h"
 
 #include <QChart>
 #include <QDateTime>

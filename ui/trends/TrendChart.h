@@ -1,8 +1,8 @@
 #pragma once
 
-#include "monitor/MonitorHub.h"
-#include "trends/TrendAxes.h"
-#include "trends/TrendLines.h"
+#include "model/monitor/MonitorHub.h"
+#include "ui/trends/TrendAxes.h"
+#include "ui/trends/TrendLines.h"
 
 #include <QPointer>
 #include <QTimer>

@@ -1,4 +1,4 @@
-#include "trends/TrendChartView.h"
+#include "ui/trends/TrendChartView.h"
 
 #include <QDateTime>
 #include <QDateTimeAxis>

@@ -1,7 +1,7 @@
-#include "trends/TrendDefaults.h"
+#include "ui/trends/TrendDefaults.h"
 
-#include "profile/Profile.h"
-#include "profile/RoleEvaluator.h"
+#include "model/profile/Profile.h"
+#include "model/profile/RoleEvaluator.h"
 
 namespace opentop {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "trends/TrendChart.h"
+#include "ui/trends/TrendChart.h"
 
 namespace opentop {
 

@@ -1,10 +1,10 @@
-#include "trends/TrendLines.h"
+#include "ui/trends/TrendLines.h"
 
-#include "bus/BusDrives.h"
-#include "monitor/Freshness.h"
-#include "session/DeviceSession.h"
-#include "trends/TrendAxes.h"
-#include "trends/TrendPoints.h"
+#include "model/bus/BusDrives.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/Freshness.h"
+#include "ui/trends/TrendAxes.h"
+#include "ui/trends/TrendPoints.h"
 
 #include <QChart>
 #include <QDateTimeAxis>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "monitor/MonitorHub.h"
-#include "monitor/TrendHistory.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/monitor/TrendHistory.h"
 
 #include <QList>
 #include <QPointF>

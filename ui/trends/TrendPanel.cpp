@@ -1,11 +1,11 @@
-#include "trends/TrendPanel.h"
+#include "ui/trends/TrendPanel.h"
 
-#include "bus/BusDrives.h"
-#include "monitor/MonitorHub.h"
-#include "profile/RoleEvaluator.h"
-#include "session/DeviceSession.h"
-#include "trends/TrendChart.h"
-#include "trends/TrendDefaults.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/session/DeviceSession.h"
+#include "ui/trends/TrendChart.h"
+#include "ui/trends/TrendDefaults.h"
 
 #include <QComboBox>
 #include <QFileDialog>

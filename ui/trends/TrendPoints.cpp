@@ -1,4 +1,4 @@
-#include "trends/TrendPoints.h"
+#include "ui/trends/TrendPoints.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "trends/TrendReadout.h"
+#include "ui/trends/TrendReadout.h"
 
 #include <QDateTime>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "monitor/TrendHistory.h"
+#include "model/monitor/TrendHistory.h"
 
 #include <QCoreApplication>
 #include <QVector>

@@ -1,6 +1,6 @@
-#include "tuning/AutotunePanel.h"
+#include "ui/tuning/AutotunePanel.h"
 
-#include "tuning/NumberField.h"
+#include "ui/tuning/NumberField.h"
 
 #include <QComboBox>
 #include <QFormLayout>

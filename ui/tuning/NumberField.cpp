@@ -1,4 +1,4 @@
-#include "tuning/NumberField.h"
+#include "ui/tuning/NumberField.h"
 
 #include <QDoubleValidator>
 #include <QHBoxLayout>

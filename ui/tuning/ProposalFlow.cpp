@@ -1,6 +1,6 @@
-#include "tuning/ProposalFlow.h"
+#include "ui/tuning/ProposalFlow.h"
 
-#include "tuning/TuningGains.h"
+#include "ui/tuning/TuningGains.h"
 
 #include <QAbstractButton>
 #include <QMessageBox>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "tuning/TuningRunner.h"
-#include "tuning/TuningVerdict.h"
+#include "model/tuning/TuningRunner.h"
+#include "model/tuning/TuningVerdict.h"
 
 #include <QObject>
 #include <functional>

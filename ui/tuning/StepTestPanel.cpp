@@ -1,6 +1,6 @@
-#include "tuning/StepTestPanel.h"
+#include "ui/tuning/StepTestPanel.h"
 
-#include "tuning/NumberField.h"
+#include "ui/tuning/NumberField.h"
 
 #include <QFormLayout>
 #include <QLabel>

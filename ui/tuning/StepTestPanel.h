@@ -1,6 +1,6 @@
 #pragma once
 
-#include "tuning/TuningRunner.h"
+#include "model/tuning/TuningRunner.h"
 
 #include <QWidget>
 #include <optional>

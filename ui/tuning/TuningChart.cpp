@@ -1,4 +1,4 @@
-#include "tuning/TuningChart.h"
+#include "ui/tuning/TuningChart.h"
 
 #include <QChart>
 #include <QFontMetricsF>

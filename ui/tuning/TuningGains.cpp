@@ -1,6 +1,6 @@
-#include "tuning/TuningGains.h"
+#include "ui/tuning/TuningGains.h"
 
-#include "tuning/TuningRunner.h"
+#include "model/tuning/TuningRunner.h"
 
 #include <QPointer>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "tuning/PidGains.h"
+#include "model/tuning/PidGains.h"
 
 #include <QObject>
 #include <functional>

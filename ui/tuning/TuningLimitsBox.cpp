@@ -1,6 +1,6 @@
-#include "tuning/TuningLimitsBox.h"
+#include "ui/tuning/TuningLimitsBox.h"
 
-#include "tuning/NumberField.h"
+#include "ui/tuning/NumberField.h"
 
 #include <QFormLayout>
 #include <QLabel>

@@ -1,6 +1,6 @@
-#include "tuning/TuningMetricsView.h"
+#include "ui/tuning/TuningMetricsView.h"
 
-#include "tuning/TuningRun.h"
+#include "ui/tuning/TuningRun.h"
 
 #include <QFormLayout>
 #include <QLabel>

@@ -1,14 +1,14 @@
-#include "tuning/TuningPage.h"
+#include "ui/tuning/TuningPage.h"
 
-#include "session/DeviceSession.h"
-#include "tuning/AutotunePanel.h"
-#include "tuning/NumberField.h"
-#include "tuning/ProposalFlow.h"
-#include "tuning/StepTestPanel.h"
-#include "tuning/TuningGains.h"
-#include "tuning/TuningLimitsBox.h"
-#include "tuning/TuningRunsView.h"
-#include "widgets/ConfirmBox.h"
+#include "model/session/DeviceSession.h"
+#include "ui/tuning/AutotunePanel.h"
+#include "ui/tuning/NumberField.h"
+#include "ui/tuning/ProposalFlow.h"
+#include "ui/tuning/StepTestPanel.h"
+#include "ui/tuning/TuningGains.h"
+#include "ui/tuning/TuningLimitsBox.h"
+#include "ui/tuning/TuningRunsView.h"
+#include "ui/widgets/ConfirmBox.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "tuning/TuningRun.h"
-#include "tuning/TuningRunner.h"
+#include "model/tuning/TuningRunner.h"
+#include "ui/tuning/TuningRun.h"
 
 #include <QVector>
 #include <QWidget>

@@ -1,6 +1,6 @@
-#include "tuning/TuningRunCsv.h"
+#include "ui/tuning/TuningRunCsv.h"
 
-#include "tuning/TuningRun.h"
+#include "ui/tuning/TuningRun.h"
 
 #include <QSaveFile>
 

@@ -1,4 +1,4 @@
-#include "tuning/TuningRunList.h"
+#include "ui/tuning/TuningRunList.h"
 
 #include <QHeaderView>
 #include <QLocale>

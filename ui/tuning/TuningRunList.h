@@ -1,6 +1,6 @@
 #pragma once
 
-#include "tuning/TuningRun.h"
+#include "ui/tuning/TuningRun.h"
 
 #include <QTreeWidget>
 

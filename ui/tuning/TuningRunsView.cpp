@@ -1,9 +1,9 @@
-#include "tuning/TuningRunsView.h"
+#include "ui/tuning/TuningRunsView.h"
 
-#include "tuning/TuningChart.h"
-#include "tuning/TuningMetricsView.h"
-#include "tuning/TuningRunCsv.h"
-#include "tuning/TuningRunList.h"
+#include "ui/tuning/TuningChart.h"
+#include "ui/tuning/TuningMetricsView.h"
+#include "ui/tuning/TuningRunCsv.h"
+#include "ui/tuning/TuningRunList.h"
 
 #include <QFileDialog>
 #include <QHBoxLayout>

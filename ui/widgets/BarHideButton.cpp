@@ -1,4 +1,4 @@
-#include "widgets/BarHideButton.h"
+#include "ui/widgets/BarHideButton.h"
 
 namespace opentop {
 

@@ -1,4 +1,4 @@
-#include "widgets/ClearOfStopAll.h"
+#include "ui/widgets/ClearOfStopAll.h"
 
 #include <QEvent>
 #include <QGuiApplication>

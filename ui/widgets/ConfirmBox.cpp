@@ -1,4 +1,4 @@
-#include "widgets/ConfirmBox.h"
+#include "ui/widgets/ConfirmBox.h"
 
 #include <QAbstractButton>
 #include <QMessageBox>

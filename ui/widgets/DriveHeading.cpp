@@ -1,6 +1,6 @@
-#include "widgets/DriveHeading.h"
+#include "ui/widgets/DriveHeading.h"
 
-#include "bus/BusDrives.h"
+#include "model/bus/BusDrives.h"
 
 namespace opentop {
 

@@ -1,4 +1,4 @@
-#include "widgets/StaleLook.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QLocale>
 #include <QPalette>

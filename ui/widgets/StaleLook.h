@@ -1,6 +1,6 @@
 #pragma once
 
-#include "monitor/Freshness.h"
+#include "model/session/Freshness.h"
 
 #include <QColor>
 #include <QDateTime>

@@ -1,4 +1,4 @@
-#include "widgets/StatusLight.h"
+#include "ui/widgets/StatusLight.h"
 
 #include <QPainter>
 #include <QPixmap>

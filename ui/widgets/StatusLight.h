@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/DriveStatusPoller.h"
+#include "model/bus/DriveStatusPoller.h"
 
 #include <QColor>
 #include <QWidget>

@@ -1,12 +1,12 @@
-#include "workspace/DriveWorkspace.h"
+#include "ui/workspace/DriveWorkspace.h"
 
-#include "bus/DriveName.h"
-#include "bus/VariantQuestion.h"
-#include "groups/GroupWriteCheck.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
-#include "workspace/GroupPage.h"
-#include "workspace/SideTabWidget.h"
+#include "model/bus/DriveName.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "ui/bus/VariantQuestion.h"
+#include "ui/groups/GroupWriteCheck.h"
+#include "ui/workspace/GroupPage.h"
+#include "ui/workspace/SideTabWidget.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/DeviceParameters.h"
+#include "model/session/DeviceParameters.h"
 
 #include <QHash>
 #include <QPointer>

@@ -1,9 +1,9 @@
-#include "workspace/GroupPage.h"
+#include "ui/workspace/GroupPage.h"
 
-#include "profile/RoleEvaluator.h"
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterField.h"
-#include "workspace/ParameterInitBox.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/session/DeviceParameters.h"
+#include "ui/workspace/ParameterField.h"
+#include "ui/workspace/ParameterInitBox.h"
 
 #include <QFormLayout>
 #include <QLabel>

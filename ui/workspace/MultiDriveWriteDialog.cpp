@@ -1,14 +1,14 @@
-#include "workspace/MultiDriveWriteDialog.h"
+#include "ui/workspace/MultiDriveWriteDialog.h"
 
-#include "bus/BusDrives.h"
-#include "bus/BusGroupTracker.h"
-#include "bus/VariantQuestion.h"
-#include "groups/GroupWriteCheck.h"
-#include "profile/ValueCodec.h"
-#include "run/RunningData.h"
-#include "session/DeviceSession.h"
-#include "session/SerialLock.h"
-#include "widgets/ConfirmBox.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusGroupTracker.h"
+#include "model/profile/RunningData.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/SerialLock.h"
+#include "ui/bus/VariantQuestion.h"
+#include "ui/groups/GroupWriteCheck.h"
+#include "ui/widgets/ConfirmBox.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

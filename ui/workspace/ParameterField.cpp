@@ -1,10 +1,10 @@
-#include "workspace/ParameterField.h"
+#include "ui/workspace/ParameterField.h"
 
-#include "bus/BusDrives.h"
-#include "bus/VariantQuestion.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "ui/bus/VariantQuestion.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

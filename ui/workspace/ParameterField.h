@@ -1,6 +1,6 @@
 #pragma once
 
-#include "profile/ValueContext.h"
+#include "model/profile/ValueContext.h"
 
 #include <QWidget>
 #include <functional>

@@ -1,12 +1,12 @@
-#include "workspace/ParameterInitBox.h"
+#include "ui/workspace/ParameterInitBox.h"
 
-#include "ModbusClient.h"
-#include "bus/DriveName.h"
-#include "groups/GroupWriteCheck.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
-#include "session/ParameterInitialiser.h"
-#include "widgets/ConfirmBox.h"
+#include "model/bus/DriveName.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/ParameterInitialiser.h"
+#include "transport/ModbusClient.h"
+#include "ui/groups/GroupWriteCheck.h"
+#include "ui/widgets/ConfirmBox.h"
 
 #include <QLabel>
 #include <QMessageBox>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ConnectionSettings.h"
-#include "session/ParameterInitialiser.h"
+#include "model/session/ParameterInitialiser.h"
+#include "transport/ConnectionSettings.h"
 
 #include <QGroupBox>
 #include <QPointer>

@@ -1,11 +1,11 @@
-#include "workspace/ParameterPage.h"
+#include "ui/workspace/ParameterPage.h"
 
-#include "bus/DriveName.h"
-#include "bus/VariantQuestion.h"
-#include "groups/GroupWriteCheck.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
-#include "workspace/ParameterField.h"
+#include "model/bus/DriveName.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "ui/bus/VariantQuestion.h"
+#include "ui/groups/GroupWriteCheck.h"
+#include "ui/workspace/ParameterField.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,8 +1,8 @@
-#include "workspace/PendingValues.h"
+#include "ui/workspace/PendingValues.h"
 
-#include "profile/ValueCodec.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
 
 namespace opentop {
 

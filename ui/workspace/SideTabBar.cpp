@@ -1,4 +1,4 @@
-#include "workspace/SideTabBar.h"
+#include "ui/workspace/SideTabBar.h"
 
 #include <QStyleOptionTab>
 #include <QStylePainter>

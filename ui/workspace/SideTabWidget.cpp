@@ -1,6 +1,6 @@
-#include "workspace/SideTabWidget.h"
+#include "ui/workspace/SideTabWidget.h"
 
-#include "workspace/SideTabBar.h"
+#include "ui/workspace/SideTabBar.h"
 
 #include <QEvent>
 #include <QStackedWidget>

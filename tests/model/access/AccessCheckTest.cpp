@@ -1,15 +1,15 @@
 // Users, roles, recipe approvals and the audit trail (issue 25, item 5) on a real SQLite file and
 // on a real PostgreSQL server the test starts (PostgresServer): the same rules on both.
-#include "access/AccessCheck.h"
-#include "EolSampleUnit.h"
-#include "PostgresServer.h"
-#include "access/AuditTrail.h"
-#include "access/PasswordHash.h"
-#include "access/RecipeApprovals.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultSchema.h"
-#include "eol/ResultStore.h"
+#include "model/access/AccessCheck.h"
+#include "model/access/AuditTrail.h"
+#include "model/access/PasswordHash.h"
+#include "model/access/RecipeApprovals.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultSchema.h"
+#include "model/eol/ResultStore.h"
+#include "tests/support/EolSampleUnit.h"
+#include "tests/support/PostgresServer.h"
 
 #include <QSqlQuery>
 #include <QTemporaryDir>

@@ -1,7 +1,7 @@
 // Alarm and warning records, the communication error register, alarm reset and erasing,
 // against the in-process simulated DBU.
-#include "alarms/AlarmHistory.h"
-#include "DriveSimFixture.h"
+#include "model/alarms/AlarmHistory.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,8 +1,8 @@
 // The groups of a connected bus kept up to date: read at identification, changed by a write of
 // the group setting, and a write acknowledged by a parent read again on its children.
-#include "bus/BusGroupTracker.h"
-#include "DriveSimFixture.h"
-#include "session/DeviceParameters.h"
+#include "model/bus/BusGroupTracker.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // Communication groups: who is parent or child, what a write to a machine number also reaches,
 // and the two setups that are wrong (a chain, a child of a drive nobody knows).
-#include "bus/BusGroups.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusGroups.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

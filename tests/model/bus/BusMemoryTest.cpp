@@ -1,6 +1,6 @@
 // The drives of a connection remembered per port, gateway or simulated bus.
-#include "bus/BusMemory.h"
-#include "DriveSimFixture.h"
+#include "model/bus/BusMemory.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <QSettings>
 

@@ -1,14 +1,14 @@
 // BusScanner against in-process simulated buses: a SimBackend for clean buses, a MockBackend
 // in front of a SimBus where replies have to be corrupted the way two drives with one machine
 // number corrupt them.
-#include "bus/BusScanner.h"
-#include "MockBackend.h"
-#include "ModbusClient.h"
-#include "ModbusCrc.h"
-#include "RtuFrame.h"
-#include "SimBackend.h"
-#include "SimBus.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusScanner.h"
+#include "model/profile/ProfileRegistry.h"
+#include "sim/SimBackend.h"
+#include "sim/SimBus.h"
+#include "transport/MockBackend.h"
+#include "transport/ModbusClient.h"
+#include "transport/ModbusCrc.h"
+#include "transport/RtuFrame.h"
 
 #include <QEventLoop>
 #include <QTimer>

@@ -1,11 +1,11 @@
 // Issue 24: names for machines — checked in the model, one way of naming a drive in messages,
 // kept per bus for the window and the command line, carried by the drive's session.
-#include "bus/DriveName.h"
-#include "DriveSimFixture.h"
-#include "bus/BusDrives.h"
-#include "bus/BusGroups.h"
-#include "bus/BusMemory.h"
-#include "session/DeviceSession.h"
+#include "model/bus/DriveName.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/BusGroups.h"
+#include "model/bus/BusMemory.h"
+#include "model/session/DeviceSession.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <QSettings>
 

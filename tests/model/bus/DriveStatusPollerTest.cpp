@@ -1,10 +1,10 @@
-#include "bus/DriveStatusPoller.h"
-#include "ModbusClient.h"
-#include "SimBackend.h"
-#include "SimBus.h"
-#include "bus/BusDrives.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "sim/SimBackend.h"
+#include "sim/SimBus.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>

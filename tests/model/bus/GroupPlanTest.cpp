@@ -1,6 +1,6 @@
 // The order in which planned communication groups are written: a drive whose write reaches
 // others goes last, the plan's own problems are seen before anything is written.
-#include "bus/GroupPlan.h"
+#include "model/bus/GroupPlan.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Issue 24: when a drive's variant must be asked, and what the question says it changes.
-#include "bus/VariantNeed.h"
-#include "DriveSimFixture.h"
-#include "bus/BusDrives.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
+#include "model/bus/VariantNeed.h"
+#include "model/bus/BusDrives.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

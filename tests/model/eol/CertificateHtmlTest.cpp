@@ -1,5 +1,5 @@
-#include "eol/CertificateHtml.h"
-#include "EolSampleUnit.h"
+#include "model/eol/CertificateHtml.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <gtest/gtest.h>
 

@@ -2,13 +2,13 @@
 // DBU, eight DBUs on one bus, a DC controller), FAIL with the right reason for each simulated
 // defect, the motor stopped after every failure and after a cancel, and the record the store
 // keeps equal to the one the run returns.
-#include "eol/EolRun.h"
-#include "DriveSimFixture.h"
-#include "RecipeTestSupport.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultWriter.h"
-#include "profile/RoleEvaluator.h"
+#include "model/eol/EolRun.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultWriter.h"
+#include "model/profile/RoleEvaluator.h"
+#include "tests/model/DriveSimFixture.h"
+#include "tests/model/eol/RecipeTestSupport.h"
 
 #include <QTemporaryDir>
 #include <cctype>

@@ -1,9 +1,9 @@
 // GoldenLimits: the hold limits of a recipe tightened around a golden unit's measured values
 // by the stated margin (25 % of the value, at least 5 % of full scale), rounded outwards, never
 // wider than the default; refused when the golden unit did not pass or a value is missing.
-#include "eol/GoldenLimits.h"
-#include "RecipeTestSupport.h"
-#include "profile/ProfileRegistry.h"
+#include "model/eol/GoldenLimits.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/model/eol/RecipeTestSupport.h"
 
 #include <cmath>
 

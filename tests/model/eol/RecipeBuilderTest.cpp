@@ -2,10 +2,10 @@
 // at 150, a DC controller at 7) holds each drive's settings as the drive had them, names its
 // variant and firmware, leaves the communication settings out, and passes the checker with
 // its default steps; it survives a round trip through a recipe file.
-#include "eol/RecipeBuilder.h"
-#include "RecipeTestSupport.h"
-#include "files/BackupFile.h"
-#include "files/BackupTestSupport.h"
+#include "model/eol/RecipeBuilder.h"
+#include "model/files/BackupFile.h"
+#include "tests/model/eol/RecipeTestSupport.h"
+#include "tests/model/files/BackupTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,7 +1,7 @@
 // RecipeChecker: one test per kind of problem. Each starts from an example recipe that passes
 // and breaks one thing, and asserts that exactly that is reported, with the entry's path and a
 // message naming the position, the setting's label and the allowed values.
-#include "RecipeTestSupport.h"
+#include "tests/model/eol/RecipeTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

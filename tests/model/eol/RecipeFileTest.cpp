@@ -1,8 +1,8 @@
 // Recipe files: the examples load and pass the checker, a recipe reads back as it was written,
 // the checksum refuses a changed file, and every kind of malformed file is refused with a
 // reason naming the entry.
-#include "RecipeTestSupport.h"
-#include "files/BackupFile.h"
+#include "model/files/BackupFile.h"
+#include "tests/model/eol/RecipeTestSupport.h"
 
 #include <QCryptographicHash>
 #include <QDir>

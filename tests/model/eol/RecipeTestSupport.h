@@ -3,9 +3,9 @@
 // Shared by the recipe tests: the example recipes of docs/examples and a way to see a
 // checker's problems.
 
-#include "eol/RecipeChecker.h"
-#include "eol/RecipeFile.h"
-#include "profile/ProfileRegistry.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/eol/RecipeFile.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QString>
 #include <gtest/gtest.h>

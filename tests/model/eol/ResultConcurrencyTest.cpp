@@ -1,8 +1,8 @@
 // Two station processes writing to one SQLite file at once: the second waits for the first's
 // write lock (BEGIN IMMEDIATE, busy timeout) instead of failing, and every unit is whole.
-#include "EolSampleUnit.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

@@ -1,5 +1,5 @@
-#include "eol/ResultCsv.h"
-#include "EolSampleUnit.h"
+#include "model/eol/ResultCsv.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QFile>
 #include <QTemporaryDir>

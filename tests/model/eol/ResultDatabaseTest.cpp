@@ -1,9 +1,9 @@
-#include "eol/ResultDatabase.h"
-#include "EolSampleUnit.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultSchema.h"
-#include "eol/ResultStore.h"
-#include "eol/UnitRecordJson.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultSchema.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/UnitRecordJson.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QFile>
 #include <QSqlQuery>

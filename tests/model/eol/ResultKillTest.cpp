@@ -1,11 +1,11 @@
 // A station killed with SIGKILL inside finishUnit's transaction (every child row written, the
 // status not yet): the database stays valid, the unit stays 'running', the station's restart
 // marks it 'interrupted', and no query ever counts it as a pass.
-#include "EolSampleUnit.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultStore.h"
-#include "eol/YieldReport.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/YieldReport.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

@@ -1,12 +1,12 @@
 // The results database on a real PostgreSQL server (PostgresServer starts a throw-away one):
 // the same schema and the same records as SQLite, and two station processes writing at once.
-#include "EolSampleUnit.h"
-#include "PostgresServer.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultSchema.h"
-#include "eol/ResultStore.h"
-#include "eol/UnitRecordJson.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultSchema.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/UnitRecordJson.h"
+#include "tests/support/EolSampleUnit.h"
+#include "tests/support/PostgresServer.h"
 
 #include <QElapsedTimer>
 #include <QProcess>

@@ -1,8 +1,8 @@
-#include "eol/ResultQueries.h"
-#include "EolSampleUnit.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
-#include "eol/YieldReport.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/YieldReport.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>

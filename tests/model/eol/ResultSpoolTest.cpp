@@ -1,14 +1,14 @@
 // The station's spool: results a results database cannot take are kept on the station's disk
 // and reach the database in order and exactly once when it answers again, against a real
 // PostgreSQL server that the test stops and starts (PostgresServer).
-#include "eol/ResultSpool.h"
-#include "EolSampleUnit.h"
-#include "PostgresServer.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultSink.h"
-#include "eol/ResultStore.h"
-#include "eol/ResultWriter.h"
+#include "model/eol/ResultSpool.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultSink.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/ResultWriter.h"
+#include "tests/support/EolSampleUnit.h"
+#include "tests/support/PostgresServer.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>

@@ -1,11 +1,11 @@
 // The station's results writer: the database on a thread of its own, so that a busy or distant
 // database never makes the operator screen wait; jobs in order; nothing given is dropped.
-#include "eol/ResultWriter.h"
-#include "EolSampleUnit.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultStore.h"
-#include "eol/StationLease.h"
+#include "model/eol/ResultWriter.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/StationLease.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>

@@ -1,5 +1,5 @@
-#include "eol/RetestPolicy.h"
-#include "eol/RecipeFile.h"
+#include "model/eol/RetestPolicy.h"
+#include "model/eol/RecipeFile.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

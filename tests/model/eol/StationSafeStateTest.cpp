@@ -2,11 +2,11 @@
 // a killed station left turning in communication priority is sent its own stop (never a
 // broadcast), confirmed stopped and given back to its inputs; a position with no unit yet is
 // fine; one that does not stop is reported and keeps communication priority.
-#include "eol/StationSafeState.h"
-#include "DriveSimFixture.h"
-#include "RecipeTestSupport.h"
-#include "eol/EolStation.h"
-#include "run/RunControl.h"
+#include "model/eol/StationSafeState.h"
+#include "model/run/RunControl.h"
+#include "model/station/EolStation.h"
+#include "tests/model/DriveSimFixture.h"
+#include "tests/model/eol/RecipeTestSupport.h"
 
 #include <QRegularExpression>
 

@@ -1,5 +1,5 @@
-#include "eol/UnitRecordJson.h"
-#include "EolSampleUnit.h"
+#include "model/eol/UnitRecordJson.h"
+#include "tests/support/EolSampleUnit.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,7 +1,7 @@
 // UnitValuesCsv: per-unit values by serial number, with every malformed file refused naming the
 // line, and every value checked against the recipe's range when it is looked up.
-#include "eol/UnitValuesCsv.h"
-#include "RecipeTestSupport.h"
+#include "model/eol/UnitValuesCsv.h"
+#include "tests/model/eol/RecipeTestSupport.h"
 
 #include <QTemporaryDir>
 

@@ -2,12 +2,12 @@
 // profile's probe (the speed lower limit at 280 r/min: a DBU200 takes it, a DBU400 refuses it),
 // with every register as it was afterwards. A DBU400 at a DBU200 position never passes as a
 // DBU200, and the record says how each variant was known.
-#include "DriveSimFixture.h"
-#include "RecipeTestSupport.h"
-#include "eol/EolRun.h"
-#include "eol/VariantDecision.h"
-#include "profile/VariantProbe.h"
-#include "session/VariantProber.h"
+#include "model/eol/EolRun.h"
+#include "model/eol/VariantDecision.h"
+#include "model/profile/VariantProbe.h"
+#include "model/session/VariantProber.h"
+#include "tests/model/DriveSimFixture.h"
+#include "tests/model/eol/RecipeTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,5 +1,5 @@
-#include "eol/YieldReport.h"
-#include "eol/ResultCsv.h"
+#include "model/eol/YieldReport.h"
+#include "model/eol/ResultCsv.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Backup files: what is written, that it reads back identically, and every reason a file is
 // refused (not JSON, not ours, a newer version, changed after writing, unknown drives or
 // parameters, wrong register counts, values the profile does not allow).
-#include "files/BackupFile.h"
-#include "BackupTestSupport.h"
-#include "files/Comparer.h"
+#include "model/files/BackupFile.h"
+#include "model/files/Comparer.h"
+#include "tests/model/files/BackupTestSupport.h"
 
 #include <QCryptographicHash>
 #include <QJsonArray>

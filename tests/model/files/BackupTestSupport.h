@@ -3,15 +3,15 @@
 // An in-process bus with simulated drives for the backup, compare and restore tests: a DBU200
 // at 1, a DBU400 at 150 and a DC controller at 7, every frame in a traffic log.
 
-#include "DriveSimFixture.h"
-#include "ModbusClient.h"
-#include "SimBackend.h"
-#include "SimBus.h"
-#include "TrafficLog.h"
-#include "files/BackupReader.h"
-#include "files/Restorer.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "model/files/BackupReader.h"
+#include "model/files/Restorer.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "sim/SimBackend.h"
+#include "sim/SimBus.h"
+#include "tests/model/DriveSimFixture.h"
+#include "transport/ModbusClient.h"
+#include "transport/TrafficLog.h"
 
 #include <QEventLoop>
 #include <QTimer>

@@ -1,8 +1,8 @@
 // Comparing parameter sets: by name, with each side's units and meaning, and against the
 // profile's factory defaults, where a parameter without a documented default is listed and
 // never counted as a difference.
-#include "files/Comparer.h"
-#include "BackupTestSupport.h"
+#include "model/files/Comparer.h"
+#include "tests/model/files/BackupTestSupport.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -2,9 +2,9 @@
 // in dependency order with communication settings last, DC settings stored so that they
 // survive a power cycle, refusals send nothing, interruptions and faults are reported exactly
 // and a second run completes the restore.
-#include "BackupTestSupport.h"
-#include "MockBackend.h"
-#include "ModbusCrc.h"
+#include "tests/model/files/BackupTestSupport.h"
+#include "transport/MockBackend.h"
+#include "transport/ModbusCrc.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QFile>
 #include <QJsonDocument>

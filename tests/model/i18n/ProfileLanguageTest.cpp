@@ -1,10 +1,10 @@
 // A registry in another language: texts for people translated, interfaces kept in English.
-#include "I18nTestSupport.h"
-#include "files/BackupFile.h"
-#include "i18n/ProfileTexts.h"
-#include "profile/ProfileLoader.h"
-#include "profile/TestProfileJson.h"
-#include "profile/ValueCodec.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/ProfileLoader.h"
+#include "model/profile/ProfileTexts.h"
+#include "model/profile/ValueCodec.h"
+#include "tests/model/i18n/I18nTestSupport.h"
+#include "tests/model/profile/TestProfileJson.h"
 
 #include <QDir>
 #include <QJsonDocument>

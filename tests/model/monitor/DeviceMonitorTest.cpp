@@ -1,6 +1,6 @@
 // The live monitor against the in-process simulated bus.
-#include "monitor/DeviceMonitor.h"
-#include "DriveSimFixture.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,5 +1,5 @@
 // LocalTimeZone: TZ is set so that glibc reads the zone once, and the zone stays the system's.
-#include "monitor/LocalTimeZone.h"
+#include "model/monitor/LocalTimeZone.h"
 
 #include <QDateTime>
 #include <QTimeZone>

@@ -1,8 +1,8 @@
 // Shared live monitoring against the in-process simulated bus.
-#include "monitor/MonitorHub.h"
-#include "DriveSimFixture.h"
-#include "bus/BusDrives.h"
-#include "profile/ProfileRegistry.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/bus/BusDrives.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,7 +1,7 @@
 // What the DBU's 5-digit panel shows, worked out from samples of the DBU profile.
-#include "monitor/PanelMirror.h"
-#include "monitor/DeviceMonitor.h"
-#include "profile/ProfileRegistry.h"
+#include "model/monitor/PanelMirror.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Saving a trend CSV goes through OutputFile: a FIFO or device is written through (never
 // replaced by a regular file), a full device or a missing folder is an error, not success.
-#include "FifoReader.h"
-#include "monitor/DeviceMonitor.h"
-#include "monitor/TrendCsv.h"
-#include "monitor/TrendHistory.h"
-#include "profile/ProfileRegistry.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/monitor/TrendCsv.h"
+#include "model/monitor/TrendHistory.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/support/FifoReader.h"
 
 #include <QFileInfo>
 #include <QTemporaryDir>

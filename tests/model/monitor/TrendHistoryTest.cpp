@@ -1,8 +1,8 @@
 // Trend history and its CSV form, from hand-made samples of the DBU profile.
-#include "monitor/TrendHistory.h"
-#include "monitor/DeviceMonitor.h"
-#include "monitor/TrendCsv.h"
-#include "profile/ProfileRegistry.h"
+#include "model/monitor/TrendHistory.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/monitor/TrendCsv.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Every communication error code a profile knows is explained in words a field engineer reads,
 // with what to do: the DBU's E0h–E8h and the DC controller's Modbus exception codes.
-#include "profile/CodeTable.h"
-#include "profile/ProfileRegistry.h"
+#include "model/profile/CodeTable.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QRegularExpression>
 #include <gtest/gtest.h>

@@ -10,8 +10,8 @@
 //  - 12-10 gives the speed display update time as "5 ~ 300" (0005h–012Ch); 7-1-4 says
 //    0.5–30 s, so the register counts 0.1 s.
 //  - 12-10 gives the speed increasing ratio 4 bytes but 0064h–0960h written with 06: one register.
-#include "RegisterTable.h"
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/model/profile/RegisterTable.h"
 
 #include <gtest/gtest.h>
 

@@ -13,8 +13,8 @@
 //    and within the 0x0040 range") depend on the preset speed mode 0x00A0.
 //  - 0x0041 (no function code), 0x0043 ("can not access") and 0x0054 ("can not access alone")
 //    are not rows here; ProfileCompletenessTest checks that 0x0043 and 0x0054 are not accessible.
-#include "RegisterTable.h"
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/model/profile/RegisterTable.h"
 
 #include <gtest/gtest.h>
 

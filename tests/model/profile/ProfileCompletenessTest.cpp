@@ -4,9 +4,9 @@
 // 003_e17f880ddc4c624e.txt section 1.3); this file holds the DBU code tables (chapters 11-5,
 // 12-7, 12-8, 12-9, 13), the registers that must not be accessible, and the manual's worked
 // value examples.
-#include "RegisterTable.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "tests/model/profile/RegisterTable.h"
 
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "profile/ProfileLoader.h"
-#include "TestProfileJson.h"
+#include "model/profile/ProfileLoader.h"
+#include "tests/model/profile/TestProfileJson.h"
 
 #include <QJsonArray>
 #include <functional>

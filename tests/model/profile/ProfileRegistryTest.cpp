@@ -1,6 +1,6 @@
-#include "profile/ProfileRegistry.h"
-#include "bus/BusSpec.h"
-#include "profile/ProfileLoader.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/bus/BusSpec.h"
+#include "model/profile/ProfileLoader.h"
 
 #include <QDir>
 #include <gtest/gtest.h>

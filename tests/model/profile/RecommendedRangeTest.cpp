@@ -1,9 +1,9 @@
 // A profile's recommended range beside its allowed range ("recommended"): values allowed but
 // outside it are accepted with a warning naming it, values outside the allowed range refused.
-#include "TestProfileJson.h"
-#include "profile/ProfileLoader.h"
-#include "profile/ProfileRegistry.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/ProfileLoader.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/profile/ValueCodec.h"
+#include "tests/model/profile/TestProfileJson.h"
 
 #include <QJsonArray>
 #include <gtest/gtest.h>

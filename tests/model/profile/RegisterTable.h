@@ -5,8 +5,8 @@
 // (000_306a808c77939fd6.txt, chapter 12) and DcRegisterTable.cpp (003_e17f880ddc4c624e.txt,
 // section 1.3). They are written from the manuals, not from model/profiles/*.json.
 
-#include "profile/ParameterMeta.h"
-#include "profile/Profile.h"
+#include "model/profile/ParameterMeta.h"
+#include "model/profile/Profile.h"
 
 #include <QtGlobal>
 #include <ostream>

@@ -1,8 +1,8 @@
 // The comparison of one manual register row with a built-in profile (see RegisterTable.h).
-#include "RegisterTable.h"
+#include "tests/model/profile/RegisterTable.h"
 
-#include "profile/ValueCodec.h"
-#include "profile/ValueContext.h"
+#include "model/profile/ValueCodec.h"
+#include "model/profile/ValueContext.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // Issue 24: profile texts name settings as the program shows them ({setting:…}, resolved in the
 // language shown), and each family says how its machine number is set (AddressSwitches).
-#include "profile/SettingReference.h"
+#include "model/profile/SettingReference.h"
 
-#include "../i18n/I18nTestSupport.h"
-#include "TestProfileJson.h"
-#include "i18n/ProfileTexts.h"
-#include "i18n/ProfileTranslation.h"
-#include "profile/ProfileLoader.h"
-#include "session/DeviceInfo.h"
+#include "model/profile/ProfileLoader.h"
+#include "model/profile/ProfileTexts.h"
+#include "model/profile/ProfileTranslation.h"
+#include "model/session/DeviceInfo.h"
+#include "tests/model/i18n/I18nTestSupport.h"
+#include "tests/model/profile/TestProfileJson.h"
 
 #include <QJsonDocument>
 #include <QRegularExpression>

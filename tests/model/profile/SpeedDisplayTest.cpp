@@ -1,7 +1,7 @@
 // What the drive's speed display shows: formulas of docs/speed-display.md against values worked
 // out by hand.
-#include "profile/SpeedDisplay.h"
-#include "profile/ProfileRegistry.h"
+#include "model/profile/SpeedDisplay.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QHash>
 #include <gtest/gtest.h>

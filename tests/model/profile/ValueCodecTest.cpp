@@ -1,6 +1,6 @@
-#include "profile/ValueCodec.h"
-#include "TestProfileJson.h"
-#include "profile/ProfileLoader.h"
+#include "model/profile/ValueCodec.h"
+#include "model/profile/ProfileLoader.h"
+#include "tests/model/profile/TestProfileJson.h"
 
 #include <gtest/gtest.h>
 

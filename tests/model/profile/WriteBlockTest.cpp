@@ -1,7 +1,7 @@
 // The profile key "writeBlock": a setting written as part of a larger 0x10 frame.
-#include "TestProfileJson.h"
-#include "profile/ProfileLoader.h"
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileLoader.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/model/profile/TestProfileJson.h"
 
 #include <QJsonArray>
 #include <gtest/gtest.h>

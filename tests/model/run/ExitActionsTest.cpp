@@ -1,9 +1,9 @@
 // The exit question's default carried out by the model (issue 24 item 6): each running drive
 // stopped and confirmed, then given back to its inputs (I/O priority, read back); a drive that
 // did not stop keeps communication priority and the failures name it.
-#include "run/ExitActions.h"
-#include "DriveSimFixture.h"
-#include "run/RunControl.h"
+#include "model/run/ExitActions.h"
+#include "model/run/RunControl.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <QRegularExpression>
 

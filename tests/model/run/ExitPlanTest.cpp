@@ -1,7 +1,7 @@
 // What the exit question offers and says for each mix of drives left behind (issue 24 item 6):
 // the default stops and gives back, a family without I/O priority is stopped only, and each
 // drive's line says what will happen to it.
-#include "run/ExitPlan.h"
+#include "model/run/ExitPlan.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Which drives of a communication group follow a run command sent to their parent: a child in
 // I/O priority ignores it (and shows E2h), read from the children before and after, against the
 // in-process simulator whose children execute the parent's frames.
-#include "run/GroupFollowers.h"
-#include "DriveSimFixture.h"
-#include "run/RunControl.h"
+#include "model/run/GroupFollowers.h"
+#include "model/run/RunControl.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

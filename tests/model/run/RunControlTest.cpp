@@ -1,6 +1,6 @@
 // Test runs and stop-all against the in-process simulated bus.
-#include "run/RunControl.h"
-#include "DriveSimFixture.h"
+#include "model/run/RunControl.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

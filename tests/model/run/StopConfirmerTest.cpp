@@ -1,7 +1,7 @@
 // The stop deadline of StopConfirmer against the simulated DBU: SPno1's deceleration comes from
 // the SD knob, which cannot be read, so the profile's knob maximum counts while SPno1 runs.
-#include "run/StopConfirmer.h"
-#include "DriveSimFixture.h"
+#include "model/run/StopConfirmer.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

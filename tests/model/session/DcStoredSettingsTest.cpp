@@ -2,11 +2,11 @@
 // parity as the 15-register 0x10 write from 0x0080, AI1/AI2 as the 5-register write from 0x0050,
 // each reading the block first; they survive a simulated power cycle. Also the recommended
 // range of the PID coefficients and the serial lock's warning, through the session.
-#include "DriveSimFixture.h"
-#include "SimDevice.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
-#include "session/SerialLock.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/SerialLock.h"
+#include "sim/SimDevice.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <gtest/gtest.h>
 

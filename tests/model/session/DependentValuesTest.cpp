@@ -1,9 +1,9 @@
 // The control-mode / input-function rule as every writer meets it in DeviceSession::write: a
 // mode that would leave the drive's input functions invalid is refused before anything is sent,
 // unless valid functions are written in the same operation.
-#include "session/DependentValues.h"
-#include "DriveSimFixture.h"
-#include "session/DeviceParameters.h"
+#include "model/session/DependentValues.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <QRegularExpression>
 

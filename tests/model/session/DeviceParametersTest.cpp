@@ -1,9 +1,9 @@
-#include "session/DeviceParameters.h"
-#include "DriveSimFixture.h"
-#include "FaultInjector.h"
-#include "ModbusClient.h"
-#include "SimBus.h"
-#include "session/DeviceSession.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "sim/FaultInjector.h"
+#include "sim/SimBus.h"
+#include "tests/model/DriveSimFixture.h"
+#include "transport/ModbusClient.h"
 
 #include <QEventLoop>
 #include <QTimer>

@@ -2,11 +2,11 @@
 // communication error register: nothing was executed, so a setting is sent again (found by
 // the fault matrix, issue 11: 1 % busy replies made every other 32-drive restore give up).
 // Commands are not sent again on their own.
-#include "MockBackend.h"
-#include "ModbusClient.h"
-#include "RtuFrame.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "transport/MockBackend.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,12 +1,12 @@
-#include "session/DeviceSession.h"
-#include "DriveSimFixture.h"
-#include "ModbusClient.h"
-#include "SimBackend.h"
-#include "SimBus.h"
-#include "SimDevice.h"
-#include "TrafficLog.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceIdentifier.h"
+#include "model/session/DeviceSession.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceIdentifier.h"
+#include "sim/SimBackend.h"
+#include "sim/SimBus.h"
+#include "sim/SimDevice.h"
+#include "tests/model/DriveSimFixture.h"
+#include "transport/ModbusClient.h"
+#include "transport/TrafficLog.h"
 
 #include <QEventLoop>
 #include <QTimer>

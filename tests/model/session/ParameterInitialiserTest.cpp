@@ -1,7 +1,7 @@
-#include "session/ParameterInitialiser.h"
-#include "DriveSimFixture.h"
-#include "SimBus.h"
-#include "session/DeviceSession.h"
+#include "model/session/ParameterInitialiser.h"
+#include "model/session/DeviceSession.h"
+#include "sim/SimBus.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <gtest/gtest.h>
 

@@ -2,13 +2,13 @@
 // replying): each child validates the value by its own profile and variant before anything is
 // sent, and each is read back afterwards; the write is verified only when every drive holds it.
 // Against the in-process simulator, whose children execute the parent's frames.
-#include "session/ReachedDrives.h"
-#include "DriveSimFixture.h"
-#include "bus/BusGroupTracker.h"
-#include "profile/ValueCodec.h"
-#include "session/DeviceParameters.h"
-#include "session/DeviceSession.h"
-#include "session/GroupReach.h"
+#include "model/session/ReachedDrives.h"
+#include "model/bus/BusGroupTracker.h"
+#include "model/profile/ValueCodec.h"
+#include "model/session/DeviceParameters.h"
+#include "model/session/DeviceSession.h"
+#include "model/session/GroupReach.h"
+#include "tests/model/DriveSimFixture.h"
 
 #include <QRegularExpression>
 

@@ -1,5 +1,5 @@
-#include "session/ReadPlanner.h"
-#include "profile/ProfileRegistry.h"
+#include "model/session/ReadPlanner.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

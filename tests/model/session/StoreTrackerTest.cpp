@@ -1,6 +1,6 @@
 // Issue 24: which store commands a DC controller needs, from the writes this program made.
-#include "session/StoreTracker.h"
-#include "DriveSimFixture.h"
+#include "model/session/StoreTracker.h"
+#include "tests/model/DriveSimFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,10 +1,10 @@
-#include "traffic/TrafficDescriber.h"
-#include "DriveSimFixture.h"
+#include "model/traffic/TrafficDescriber.h"
+#include "tests/model/DriveSimFixture.h"
 
-#include "ModbusRequest.h"
-#include "RtuFrame.h"
-#include "bus/BusGroups.h"
-#include "profile/ProfileRegistry.h"
+#include "model/bus/BusGroups.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusRequest.h"
+#include "transport/RtuFrame.h"
 
 using namespace opentop;
 using namespace opentop::test;

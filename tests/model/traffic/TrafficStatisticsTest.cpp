@@ -1,8 +1,8 @@
-#include "traffic/TrafficStatistics.h"
-#include "DriveSimFixture.h"
+#include "model/traffic/TrafficStatistics.h"
+#include "tests/model/DriveSimFixture.h"
 
-#include "FaultInjector.h"
-#include "ModbusRequest.h"
+#include "sim/FaultInjector.h"
+#include "transport/ModbusRequest.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,12 +1,12 @@
 // The tuning calculations on responses whose figures are known in closed form.
-#include "profile/ProfileRegistry.h"
-#include "tuning/GainDesign.h"
-#include "tuning/PlantModel.h"
-#include "tuning/RelayAnalysis.h"
-#include "tuning/StepMetrics.h"
-#include "tuning/TuningRules.h"
-#include "tuning/TuningSpec.h"
-#include "tuning/TuningVerdict.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/tuning/GainDesign.h"
+#include "model/tuning/PlantModel.h"
+#include "model/tuning/RelayAnalysis.h"
+#include "model/tuning/StepMetrics.h"
+#include "model/tuning/TuningRules.h"
+#include "model/tuning/TuningSpec.h"
+#include "model/tuning/TuningVerdict.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

@@ -5,13 +5,13 @@
 // plant as predicted, checked by the step after Accept; unsteady and lopsided relays, and a
 // step that does not settle, are named. OPENTOP_TUNING_TABLE=1 prints each case's figures
 // and those of the method before this check (docs/tuning.md's table).
-#include "tuning/TuningRunner.h"
-#include "tuning/TuningVerdict.h"
+#include "model/tuning/TuningRunner.h"
+#include "model/tuning/TuningVerdict.h"
 
-#include "DriveSimFixture.h"
-#include "VirtualLine.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "tests/model/DriveSimFixture.h"
+#include "tests/model/tuning/VirtualLine.h"
 
 #include <QEventLoop>
 #include <QTimer>

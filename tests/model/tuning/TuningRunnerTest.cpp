@@ -1,8 +1,8 @@
 // Speed-loop tests on a simulated DC controller: step responses with poor and good gains, the
 // relay autotune's proposal, the test's limits, and what a test leaves behind in the drive.
-#include "tuning/TuningRunner.h"
+#include "model/tuning/TuningRunner.h"
 
-#include "DriveSimFixture.h"
+#include "tests/model/DriveSimFixture.h"
 #include <QMutexLocker>
 
 using namespace opentop;

@@ -6,12 +6,12 @@
 // and a host's share. A tuning test on it runs at the pace of the CPU, gives the same samples
 // on every run, however loaded the machine, and its runner stamps samples with the line's time.
 
-#include "ManualSimClock.h"
-#include "ModbusBackend.h"
-#include "ModbusClient.h"
-#include "RtuFrame.h"
-#include "SimBus.h"
-#include "WireTiming.h"
+#include "sim/ManualSimClock.h"
+#include "sim/SimBus.h"
+#include "sim/WireTiming.h"
+#include "transport/ModbusBackend.h"
+#include "transport/ModbusClient.h"
+#include "transport/RtuFrame.h"
 
 #include <atomic>
 #include <functional>

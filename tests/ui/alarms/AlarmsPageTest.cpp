@@ -1,11 +1,11 @@
 // The alarms page, the alarm banner and the CSV export against the in-process simulated DBU.
-#include "alarms/AlarmsPage.h"
-#include "FifoReader.h"
-#include "UiSimFixture.h"
-#include "alarms/AlarmBanner.h"
-#include "alarms/AlarmExport.h"
-#include "bus/BusDrives.h"
-#include "bus/DriveStatusPoller.h"
+#include "ui/alarms/AlarmsPage.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "tests/support/FifoReader.h"
+#include "tests/ui/UiSimFixture.h"
+#include "ui/alarms/AlarmBanner.h"
+#include "ui/alarms/AlarmExport.h"
 
 #include <QApplication>
 #include <QFile>

@@ -1,10 +1,10 @@
 // The bus overview against the in-process simulated bus: every drive live in one grid while
 // it is shown, an alarm marked, nothing polled while it is hidden.
-#include "bus/BusOverview.h"
-#include "../model/DriveSimFixture.h"
-#include "bus/BusDrives.h"
-#include "bus/BusOverviewModel.h"
-#include "monitor/MonitorHub.h"
+#include "ui/bus/BusOverview.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "tests/model/DriveSimFixture.h"
+#include "ui/bus/BusOverviewModel.h"
 
 #include <QBrush>
 #include <QSignalSpy>

@@ -1,12 +1,12 @@
-#include "bus/BusPanel.h"
-#include "BackendFactory.h"
-#include "ModbusClient.h"
-#include "SimBus.h"
-#include "bus/BusDrives.h"
-#include "bus/BusListModel.h"
-#include "bus/DriveStatusPoller.h"
-#include "profile/ProfileRegistry.h"
-#include "session/DeviceSession.h"
+#include "ui/bus/BusPanel.h"
+#include "connection/BackendFactory.h"
+#include "model/bus/BusDrives.h"
+#include "model/bus/DriveStatusPoller.h"
+#include "model/profile/ProfileRegistry.h"
+#include "model/session/DeviceSession.h"
+#include "sim/SimBus.h"
+#include "transport/ModbusClient.h"
+#include "ui/bus/BusListModel.h"
 
 #include <QAction>
 #include <QBrush>

@@ -1,5 +1,5 @@
-#include "connection/ConnectionDialog.h"
-#include "connection/DriveFormatsField.h"
+#include "ui/connection/ConnectionDialog.h"
+#include "ui/connection/DriveFormatsField.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -260,7 +260,7 @@ TEST_F(ConnectionDialogTest, DriveFormatsRoundTripAreCheckedAndTheGuidanceSaysHo
 
     // The Mixed bus button's text: which register, the storage rule, the order of the steps.
     const QString guidance = DriveFormatsField::guidance();
-    for (const char* part : {"0x008C", "None, 2 stop bits", "0x10", "15 registers",
-                             "next power-up", "switch it off and on", "1.", "4."})
+    for (const char* part : {"0x008C", "None, 2 stop bits", "0x10", "15 registers", "next power-up",
+                             "switch it off and on", "1.", "4."})
         EXPECT_TRUE(guidance.contains(QLatin1String(part))) << part;
 }

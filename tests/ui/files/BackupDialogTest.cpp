@@ -1,7 +1,7 @@
-#include "FileDialogsFixture.h"
-#include "files/BackupFile.h"
-#include "files/BackupViewer.h"
-#include "files/FileActions.h"
+#include "model/files/BackupFile.h"
+#include "tests/ui/files/FileDialogsFixture.h"
+#include "ui/files/BackupViewer.h"
+#include "ui/files/FileActions.h"
 
 #include <QFileInfo>
 #include <QMenu>

@@ -1,7 +1,7 @@
-#include "files/CompareDialog.h"
-#include "FileDialogsFixture.h"
-#include "files/Comparer.h"
-#include "files/RestoreDialog.h"
+#include "ui/files/CompareDialog.h"
+#include "model/files/Comparer.h"
+#include "tests/ui/files/FileDialogsFixture.h"
+#include "ui/files/RestoreDialog.h"
 
 #include <QTableWidget>
 

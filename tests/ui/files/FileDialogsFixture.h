@@ -3,10 +3,10 @@
 // Backup, restore and compare dialogs against the simulated bus: a BusDrives over the
 // fixture's client with every simulated drive identified, a temporary directory for files.
 
-#include "SimDevice.h"
-#include "UiSimFixture.h"
-#include "bus/BusDrives.h"
-#include "files/BackupDialog.h"
+#include "model/bus/BusDrives.h"
+#include "sim/SimDevice.h"
+#include "tests/ui/UiSimFixture.h"
+#include "ui/files/BackupDialog.h"
 
 #include <QFile>
 #include <QTemporaryDir>

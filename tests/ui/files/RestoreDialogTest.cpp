@@ -1,5 +1,5 @@
-#include "files/RestoreDialog.h"
-#include "FileDialogsFixture.h"
+#include "ui/files/RestoreDialog.h"
+#include "tests/ui/files/FileDialogsFixture.h"
 
 #include <QAbstractButton>
 #include <QApplication>

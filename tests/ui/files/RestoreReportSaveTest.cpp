@@ -1,7 +1,7 @@
 // Saving the restore report goes through OutputFile: a FIFO or device is written through (never
 // replaced by a regular file), a missing folder or a directory is an error, not success.
-#include "FifoReader.h"
-#include "files/RestoreReport.h"
+#include "tests/support/FifoReader.h"
+#include "ui/files/RestoreReport.h"
 
 #include <QFile>
 #include <QTemporaryDir>

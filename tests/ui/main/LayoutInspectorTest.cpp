@@ -1,7 +1,7 @@
 // The layout test's inspector finds what it is meant to find (so that a clean report means
 // something): overlapping siblings, cut text, tabs behind scroll arrows, a window larger than
 // the screen, a column out of reach.
-#include "LayoutInspector.h"
+#include "tests/ui/main/LayoutInspector.h"
 
 #include <QCoreApplication>
 #include <QHBoxLayout>

@@ -1,7 +1,7 @@
 // The bus remembered per connection and offered back after a reconnection or a restart; the
 // page header naming the model once the variant is set; a simulated bus marked as such.
-#include "MainWindowFixture.h"
-#include "bus/BusRecallBar.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "ui/bus/BusRecallBar.h"
 
 #include <QFile>
 

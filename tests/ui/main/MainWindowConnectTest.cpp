@@ -1,6 +1,6 @@
 // Issue 10 item 15: a Connect that fails (a port that does not exist) keeps the connection one
 // was working on, and says why.
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

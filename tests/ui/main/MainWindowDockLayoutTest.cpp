@@ -3,9 +3,9 @@
 // inspected beside no dock, each dock alone and every dock together, at 1366×700 and 1366×768;
 // what a user must reach (STOP ALL, the test run's commands, the drive's display) must be in
 // sight, charts must keep their axes, and the windows the menus open must leave STOP ALL visible.
-#include "MainWindowLayoutFixture.h"
-#include "eol/RecipeEditor.h"
-#include "files/RestoreDialog.h"
+#include "tests/ui/main/MainWindowLayoutFixture.h"
+#include "ui/eol/RecipeEditor.h"
+#include "ui/files/RestoreDialog.h"
 
 #include <QDockWidget>
 #include <QHeaderView>

@@ -1,14 +1,14 @@
 // Edits through the real window: a page with a field not accepted writes nothing and says why
 // at the field; user-facing text names parameters by label; the speed display's roller
 // diameter in millimetres and its preview as the panel shows it; parameter initialisation.
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "monitor/DeviceMonitor.h"
-#include "monitor/PanelMirror.h"
-#include "pages/RunningDataPage.h"
-#include "pages/SpeedUnitsPage.h"
-#include "profile/SpeedDisplay.h"
-#include "workspace/ParameterInitBox.h"
+#include "model/monitor/DeviceMonitor.h"
+#include "model/monitor/PanelMirror.h"
+#include "model/profile/SpeedDisplay.h"
+#include "ui/pages/RunningDataPage.h"
+#include "ui/pages/SpeedUnitsPage.h"
+#include "ui/workspace/ParameterInitBox.h"
 
 #include <QAbstractButton>
 #include <QComboBox>

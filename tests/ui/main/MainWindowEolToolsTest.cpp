@@ -3,17 +3,17 @@
 // record, CSV, certificate PDF) and never creates a database by looking; End of line ▸ Recipe
 // editor… opens, makes (from the drive on the bus), edits and checks recipes with the
 // profiles' rules, and saves only a recipe that passes.
-#include "EolSampleUnit.h"
-#include "MainWindowFixture.h"
-#include "eol/EolMenu.h"
-#include "eol/GoldenMeasureButton.h"
-#include "eol/RecipeEditor.h"
-#include "eol/RecipeFile.h"
-#include "eol/RecipePositionForm.h"
-#include "eol/RecipeStepsEditor.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultStore.h"
-#include "eol/ResultsBrowser.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultStore.h"
+#include "tests/support/EolSampleUnit.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "ui/eol/EolMenu.h"
+#include "ui/eol/GoldenMeasureButton.h"
+#include "ui/eol/RecipeEditor.h"
+#include "ui/eol/RecipePositionForm.h"
+#include "ui/eol/RecipeStepsEditor.h"
+#include "ui/eol/ResultsBrowser.h"
 
 #include <QComboBox>
 #include <QFile>
@@ -179,7 +179,7 @@ TEST_F(MainWindowEolToolsTest, RecipeEditorChecksEveryEditAndSavesOnlyARecipeTha
     // than the target: the checker names it and its problem selects the step.
     RecipeStepsEditor* steps = editor->positionForm()->stepsEditor();
     ASSERT_EQ(steps->table()->rowCount(), 8);
-    EXPECT_EQ(steps->table()->item(3, 1)->text(), QStringLiteral("Wait for the speed"));
+    EXPECT_EQ(steps->table()->item(3, 1)->text(), QStringLiteral("Wait for speed")); // the table's
     EXPECT_EQ(steps->table()->item(3, 2)->text(), QStringLiteral("1500 ± 50 r/min within 5 s"));
     steps->select(3);
     auto* tolerance = steps->detail()->findChild<QLineEdit*>(QStringLiteral("step_tolerance"));

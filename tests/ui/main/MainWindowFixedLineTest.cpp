@@ -1,9 +1,9 @@
 // A scan that finds nothing offers the DC controller's fixed potentiometer-mode settings
 // (9600 8E1, address 1): the bus panel's button reconnects with them and scans that address.
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "ModbusClient.h"
-#include "bus/BusPanel.h"
+#include "transport/ModbusClient.h"
+#include "ui/bus/BusPanel.h"
 
 #include <QPushButton>
 #include <QSignalSpy>

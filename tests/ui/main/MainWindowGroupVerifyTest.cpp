@@ -3,8 +3,8 @@
 // allow is refused naming it and its range before anything is sent; a child that ends up holding
 // another value turns the write red, naming it; the start question names the child in I/O
 // priority and the report after the start says who runs.
-#include "MainWindowGroupsFixture.h"
-#include "workspace/MultiDriveWriteDialog.h"
+#include "tests/ui/main/MainWindowGroupsFixture.h"
+#include "ui/workspace/MultiDriveWriteDialog.h"
 
 #include <QLabel>
 

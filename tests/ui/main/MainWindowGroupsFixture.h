@@ -1,9 +1,9 @@
 // The real window with drives 2 and 150 to be made children of drive 1's communication group,
 // and what the group tests do as the user: answer a question, read the groups, find a field.
 #pragma once
-#include "MainWindowFixture.h"
-#include "bus/BusGroupTracker.h"
-#include "groups/GroupsView.h"
+#include "model/bus/BusGroupTracker.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "ui/groups/GroupsView.h"
 
 #include <memory>
 

@@ -1,12 +1,12 @@
 // Communication groups in the real window: a write to a group parent names the drives it also
 // reaches before anything is sent and reads their values back afterwards; the group view shows
 // who follows whom, flags what is wrong, and writes a plan proved by reading every drive back.
-#include "MainWindowGroupsFixture.h"
-#include "alarms/AlarmsPage.h"
-#include "bus/BusGroupTracker.h"
-#include "groups/GroupsView.h"
-#include "workspace/MultiDriveWriteDialog.h"
-#include "workspace/ParameterInitBox.h"
+#include "model/bus/BusGroupTracker.h"
+#include "tests/ui/main/MainWindowGroupsFixture.h"
+#include "ui/alarms/AlarmsPage.h"
+#include "ui/groups/GroupsView.h"
+#include "ui/workspace/MultiDriveWriteDialog.h"
+#include "ui/workspace/ParameterInitBox.h"
 
 using namespace opentop;
 using namespace opentop::test;

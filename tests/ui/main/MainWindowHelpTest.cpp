@@ -1,12 +1,12 @@
 // Issue 10 item 15: the Help menu (user guide, keyboard shortcuts, About) and the traffic log's
 // columns and statistics, in the program's window.
-#include "LibraryVersions.h"
-#include "MainWindowFixture.h"
-#include "help/AboutDialog.h"
-#include "help/ShortcutsDialog.h"
-#include "help/UserGuideDialog.h"
-#include "traffic/TrafficLogModel.h"
-#include "traffic/TrafficLogView.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "transport/LibraryVersions.h"
+#include "ui/help/AboutDialog.h"
+#include "ui/help/ShortcutsDialog.h"
+#include "ui/help/UserGuideDialog.h"
+#include "ui/traffic/TrafficLogModel.h"
+#include "ui/traffic/TrafficLogView.h"
 
 #include <QAction>
 #include <QHeaderView>

@@ -1,8 +1,8 @@
 // The program in each language (issue 13): its menus keep one accelerator per key, the
 // language menu saves a choice for the next start, and --lang's codes are understood.
-#include "MainWindowFixture.h"
-#include "TsIndex.h"
-#include "i18n/LanguageMenu.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "tests/ui/main/TsIndex.h"
+#include "ui/i18n/LanguageMenu.h"
 
 #include <QMenu>
 #include <QMenuBar>

@@ -2,9 +2,9 @@
 // laptop's screen, and the walk that shows each page, dock and dialog and inspects it.
 #pragma once
 
-#include "LayoutInspector.h"
-#include "MainWindowFixture.h"
-#include "TsIndex.h"
+#include "tests/ui/main/LayoutInspector.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "tests/ui/main/TsIndex.h"
 
 #include <QAction>
 #include <QDialog>

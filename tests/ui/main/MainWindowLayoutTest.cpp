@@ -1,15 +1,15 @@
 // Laptop first (issue 10 item 13): the whole program on a 1366×768 screen. Every page of a DBU
 // and of the DC controller, every dock and every dialog the menus open is shown in turn and
 // inspected (LayoutInspector): nothing larger than the screen, nothing overlapping, no text cut.
-#include "MainWindowLayoutFixture.h"
-#include "eol/RecipeEditor.h"
-#include "eol/ResultsBrowser.h"
-#include "files/BackupDialog.h"
-#include "files/BackupViewer.h"
-#include "files/RestoreDialog.h"
-#include "help/AboutDialog.h"
-#include "help/ShortcutsDialog.h"
-#include "help/UserGuideDialog.h"
+#include "tests/ui/main/MainWindowLayoutFixture.h"
+#include "ui/eol/RecipeEditor.h"
+#include "ui/eol/ResultsBrowser.h"
+#include "ui/files/BackupDialog.h"
+#include "ui/files/BackupViewer.h"
+#include "ui/files/RestoreDialog.h"
+#include "ui/help/AboutDialog.h"
+#include "ui/help/ShortcutsDialog.h"
+#include "ui/help/UserGuideDialog.h"
 
 #include <QAction>
 #include <QDialog>

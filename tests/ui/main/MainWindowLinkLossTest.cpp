@@ -4,11 +4,11 @@
 // that was running; Ctrl+R comes back to the same port with the same drives and page; nothing
 // is sent over the dead port; no window sits over a question; quitting stops each drive, reads
 // the stop back and gives it back to its inputs (the simulator's registers read back).
-#include "../../e2e/SimProcess.h"
-#include "MainWindowFixture.h"
-#include "connection/ConnectionDialog.h"
-#include "main/LinkBar.h"
-#include "main/Reconnection.h"
+#include "tests/e2e/SimProcess.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "ui/connection/ConnectionDialog.h"
+#include "ui/main/LinkBar.h"
+#include "ui/main/Reconnection.h"
 
 #include <QComboBox>
 #include <QProgressDialog>

@@ -1,10 +1,10 @@
 // Issue 24 item 8 in the real window: a DBU's variant asked when it is needed (once, saying what
 // it changes, remembered for the bus), each family's own address switches, and names for
 // machines — given in the bus list, shown on pages and in questions and files, kept per bus.
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "bus/BusMemory.h"
-#include "files/BackupDialog.h"
+#include "model/bus/BusMemory.h"
+#include "ui/files/BackupDialog.h"
 
 #include <QDialog>
 #include <QFile>

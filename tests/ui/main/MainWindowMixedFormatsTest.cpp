@@ -2,9 +2,9 @@
 // its own 8E1 on a DBU bus at 19200 8N1 is not found by a scan (which says why), is added by
 // hand with its format, and then both drives are live; the bus list shows the format, its
 // context menu changes it, and the bus is remembered with it.
-#include "MainWindowFixture.h"
-#include "bus/BusRecallBar.h"
-#include "bus/DriveLineDialog.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "ui/bus/BusRecallBar.h"
+#include "ui/bus/DriveLineDialog.h"
 
 #include <QComboBox>
 #include <QFile>

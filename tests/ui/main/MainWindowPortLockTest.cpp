@@ -1,8 +1,8 @@
 // Two programs, one port, in the window (issue 11, section 5): connecting to a serial port that
 // another program holds is refused with a message naming it, the bus one works on stays, and
 // nothing goes out on the port.
-#include "MainWindowFixture.h"
-#include "PortLockFile.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "transport/PortLockFile.h"
 
 #include <QProcess>
 #include <QTemporaryDir>

@@ -2,20 +2,20 @@
 // scanner types it (ending with Enter) runs the unit to PASS or FAIL, shown large with the reason
 // and counted; nothing that edits a parameter is offered meanwhile; quitting while a unit runs
 // asks, cancels it, stops its motor and records it as aborted.
-#include "MainWindowFixture.h"
-#include "PostgresServer.h"
-#include "TrafficLog.h"
-#include "eol/EolSpeedChart.h"
-#include "eol/EolStation.h"
-#include "eol/ProductionMode.h"
-#include "eol/ProductionView.h"
-#include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/ResultSpool.h"
-#include "eol/ResultStore.h"
-#include "eol/StationLease.h"
-#include "workspace/DriveWorkspace.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/ResultSpool.h"
+#include "model/eol/ResultStore.h"
+#include "model/eol/StationLease.h"
+#include "model/station/EolStation.h"
+#include "tests/support/PostgresServer.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "transport/TrafficLog.h"
+#include "ui/eol/EolSpeedChart.h"
+#include "ui/eol/ProductionMode.h"
+#include "ui/eol/ProductionView.h"
+#include "ui/workspace/DriveWorkspace.h"
 
 #include <QDir>
 #include <QElapsedTimer>

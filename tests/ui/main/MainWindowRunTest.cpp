@@ -1,14 +1,14 @@
 // The Test run page in the real window: live state with its age, the start question, the way
 // back to I/O priority, the trend of a run started there, and the DC controller's pages.
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "FaultInjector.h"
-#include "monitor/Freshness.h"
-#include "pages/DcControllerPage.h"
-#include "pages/RunningDataPage.h"
-#include "run/RunLiveState.h"
-#include "run/SpnoSelector.h"
-#include "trends/TrendChart.h"
+#include "model/session/Freshness.h"
+#include "sim/FaultInjector.h"
+#include "ui/pages/DcControllerPage.h"
+#include "ui/pages/RunningDataPage.h"
+#include "ui/run/RunLiveState.h"
+#include "ui/run/SpnoSelector.h"
+#include "ui/trends/TrendChart.h"
 
 #include <QChart>
 #include <QComboBox>

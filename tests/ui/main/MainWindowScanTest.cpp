@@ -3,11 +3,11 @@
 // the bus: the scan owns the bus (polling waits, the page says so and its values are not shown
 // as live), every drive is found, the DC controller included, and polling goes on afterwards.
 // An address that answers but cannot be identified is named in the scan's result.
-#include "MainWindowFixture.h"
-#include "bus/BusScanner.h"
+#include "model/bus/BusScanner.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "../../e2e/SimProcess.h"
-#include "widgets/StaleLook.h"
+#include "tests/e2e/SimProcess.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QAction>
 #include <QKeySequence>

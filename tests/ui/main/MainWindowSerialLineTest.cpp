@@ -1,8 +1,8 @@
 // Issue 15: the connection dialog's RS-485 direction and low-latency choices reach the serial
 // port the window opens, and the status bar says what the driver accepted. A pty takes neither
 // the kernel's RS-485 mode nor RTS, and is no UART.
-#include "MainWindowFixture.h"
-#include "connection/ConnectionDialog.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "ui/connection/ConnectionDialog.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -3,17 +3,17 @@
 // with its cause, Compare's file drive following side A, the restore preview's filter and its
 // store commands, the trend that has no gap behind another page, alarm remedies that name
 // settings, and the keyboard shortcuts' list.
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "alarms/AlarmBanner.h"
-#include "files/BackupDialog.h"
-#include "files/CompareDialog.h"
-#include "files/RestoreDialog.h"
-#include "help/ShortcutsDialog.h"
-#include "monitor/Freshness.h"
-#include "pages/RunningDataPage.h"
-#include "run/RunLiveState.h"
-#include "run/SpnoSelector.h"
+#include "model/session/Freshness.h"
+#include "ui/alarms/AlarmBanner.h"
+#include "ui/files/BackupDialog.h"
+#include "ui/files/CompareDialog.h"
+#include "ui/files/RestoreDialog.h"
+#include "ui/help/ShortcutsDialog.h"
+#include "ui/pages/RunningDataPage.h"
+#include "ui/run/RunLiveState.h"
+#include "ui/run/SpnoSelector.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,14 +1,14 @@
 // Nothing stale looks live, through the real MainWindow: the Alarms page follows the drive and
 // the banner, a lost link greys every live view, the monitor's sample rate is the real one and
 // the Hold lamp says when holding does not apply (issue 10, items 8, 9 and 12).
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "alarms/AlarmBanner.h"
-#include "alarms/AlarmsPage.h"
-#include "monitor/PanelMirrorView.h"
-#include "monitor/TerminalLamps.h"
-#include "widgets/StaleLook.h"
-#include "widgets/StatusLight.h"
+#include "ui/alarms/AlarmBanner.h"
+#include "ui/alarms/AlarmsPage.h"
+#include "ui/monitor/PanelMirrorView.h"
+#include "ui/monitor/TerminalLamps.h"
+#include "ui/widgets/StaleLook.h"
+#include "ui/widgets/StatusLight.h"
 
 #include <QAbstractButton>
 #include <QDateTime>

@@ -3,16 +3,16 @@
 // kept out of yield; the screen's figures are the ones `opentop-cli eol results --yield` prints
 // for the same station, recipe version and shift; an alarm latched before the test is reset
 // from the screen and the unit tested again; a serial that passed waits for a technician.
-#include "MainWindowFixture.h"
-#include "eol/EolStation.h"
-#include "eol/ProductionMode.h"
-#include "eol/ProductionView.h"
-#include "eol/RecipeFile.h"
-#include "eol/ResultDatabase.h"
-#include "eol/ResultQueries.h"
-#include "eol/StationActions.h"
-#include "eol/StationYield.h"
-#include "eol/YieldReport.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultDatabase.h"
+#include "model/eol/ResultQueries.h"
+#include "model/eol/StationYield.h"
+#include "model/eol/YieldReport.h"
+#include "model/station/EolStation.h"
+#include "tests/ui/main/MainWindowFixture.h"
+#include "ui/eol/ProductionMode.h"
+#include "ui/eol/ProductionView.h"
+#include "ui/eol/StationActions.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

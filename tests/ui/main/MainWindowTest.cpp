@@ -1,7 +1,7 @@
 // The whole window against an in-process simulated bus: connect, the configured drives are
 // identified with their variants, selecting one opens its pages, an edit written from the
 // workspace reaches the drive, several drives of one family enable the multi-drive write.
-#include "MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
 using namespace opentop;
 using namespace opentop::test;

@@ -1,14 +1,14 @@
 // The monitor page against the in-process simulated bus: a started drive ramps up, the
 // terminals light, the drive's panel is mirrored, an alarm is shown with its remedy.
-#include "monitor/MonitorPage.h"
-#include "../model/DriveSimFixture.h"
-#include "bus/BusDrives.h"
-#include "monitor/MonitorHub.h"
-#include "monitor/PanelMirrorView.h"
-#include "monitor/TerminalLamps.h"
-#include "session/DeviceParameters.h"
-#include "trends/TrendChart.h"
-#include "widgets/StatusLight.h"
+#include "ui/monitor/MonitorPage.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/model/DriveSimFixture.h"
+#include "ui/monitor/PanelMirrorView.h"
+#include "ui/monitor/TerminalLamps.h"
+#include "ui/trends/TrendChart.h"
+#include "ui/widgets/StatusLight.h"
 
 #include <QSettings>
 

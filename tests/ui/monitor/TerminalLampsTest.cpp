@@ -1,8 +1,8 @@
 // The terminal lamps wrap onto more rows where the width does not hold them side by side, and
 // never overlap (issue 10 item 13: lamps overlapped unreadably on a laptop).
-#include "monitor/TerminalLamps.h"
-#include "profile/Profile.h"
-#include "profile/ProfileRegistry.h"
+#include "ui/monitor/TerminalLamps.h"
+#include "model/profile/Profile.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QLabel>
 #include <QTest>

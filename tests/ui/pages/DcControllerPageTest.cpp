@@ -1,8 +1,8 @@
-#include "pages/DcControllerPage.h"
-#include "SimDevice.h"
-#include "UiSimFixture.h"
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterField.h"
+#include "ui/pages/DcControllerPage.h"
+#include "model/session/DeviceParameters.h"
+#include "sim/SimDevice.h"
+#include "tests/ui/UiSimFixture.h"
+#include "ui/workspace/ParameterField.h"
 
 #include <QLabel>
 

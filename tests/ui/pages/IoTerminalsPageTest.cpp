@@ -1,7 +1,7 @@
-#include "pages/IoTerminalsPage.h"
-#include "PageFixture.h"
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterField.h"
+#include "ui/pages/IoTerminalsPage.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/ui/pages/PageFixture.h"
+#include "ui/workspace/ParameterField.h"
 
 #include <QComboBox>
 

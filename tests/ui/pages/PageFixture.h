@@ -1,9 +1,9 @@
 #pragma once
 
 // A page under test on a one-drive simulated bus, with its parameters read once.
-#include "../model/DriveSimFixture.h"
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterPage.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/model/DriveSimFixture.h"
+#include "ui/workspace/ParameterPage.h"
 
 namespace opentop::test {
 

@@ -1,7 +1,7 @@
-#include "pages/RunningDataPage.h"
-#include "PageFixture.h"
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterField.h"
+#include "ui/pages/RunningDataPage.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/ui/pages/PageFixture.h"
+#include "ui/workspace/ParameterField.h"
 
 #include <QApplication>
 #include <QKeyEvent>

@@ -1,7 +1,7 @@
-#include "pages/SpeedUnitsPage.h"
-#include "UiSimFixture.h"
-#include "session/DeviceParameters.h"
-#include "workspace/ParameterField.h"
+#include "ui/pages/SpeedUnitsPage.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/ui/UiSimFixture.h"
+#include "ui/workspace/ParameterField.h"
 
 #include <QLineEdit>
 

@@ -1,7 +1,7 @@
-#include "run/StopAllButton.h"
-#include "UiSimFixture.h"
-#include "bus/BusDrives.h"
-#include "run/RunControl.h"
+#include "ui/run/StopAllButton.h"
+#include "model/bus/BusDrives.h"
+#include "model/run/RunControl.h"
+#include "tests/ui/UiSimFixture.h"
 
 #include <QApplication>
 #include <QMessageBox>

@@ -1,8 +1,8 @@
-#include "run/TestRunPanel.h"
-#include "UiSimFixture.h"
-#include "bus/BusDrives.h"
-#include "run/RunControl.h"
-#include "run/StopAllButton.h"
+#include "ui/run/TestRunPanel.h"
+#include "model/bus/BusDrives.h"
+#include "model/run/RunControl.h"
+#include "tests/ui/UiSimFixture.h"
+#include "ui/run/StopAllButton.h"
 
 #include <QApplication>
 #include <QComboBox>

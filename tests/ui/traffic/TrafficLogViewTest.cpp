@@ -1,11 +1,11 @@
-#include "traffic/TrafficLogView.h"
+#include "ui/traffic/TrafficLogView.h"
 
-#include "FifoReader.h"
-#include "UiSimFixture.h"
-#include "bus/BusDrives.h"
-#include "traffic/TrafficDescriber.h"
-#include "traffic/TrafficLogFilter.h"
-#include "traffic/TrafficLogModel.h"
+#include "model/bus/BusDrives.h"
+#include "model/traffic/TrafficDescriber.h"
+#include "tests/support/FifoReader.h"
+#include "tests/ui/UiSimFixture.h"
+#include "ui/traffic/TrafficLogFilter.h"
+#include "ui/traffic/TrafficLogModel.h"
 
 #include <QCheckBox>
 #include <QFile>

@@ -1,5 +1,5 @@
 // Value axis titles of a trend chart: full when they fit, shortened so the unit stays.
-#include "trends/TrendAxes.h"
+#include "ui/trends/TrendAxes.h"
 
 #include <QChart>
 #include <QFontMetricsF>

@@ -1,6 +1,6 @@
 // How the trend lines are cut into the straight pieces TrendCanvas draws: a dash pattern runs
 // on across a line's points, as a stroked path has it.
-#include "trends/TrendCanvas.h"
+#include "ui/trends/TrendCanvas.h"
 
 #include <QPen>
 #include <gtest/gtest.h>

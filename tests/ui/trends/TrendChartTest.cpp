@@ -1,7 +1,7 @@
-#include "trends/TrendChart.h"
-#include "TrendFixture.h"
-#include "trends/TrendChartView.h"
-#include "trends/TrendReadout.h"
+#include "ui/trends/TrendChart.h"
+#include "tests/ui/trends/TrendFixture.h"
+#include "ui/trends/TrendChartView.h"
+#include "ui/trends/TrendReadout.h"
 
 #include <QChart>
 #include <QDateTimeAxis>

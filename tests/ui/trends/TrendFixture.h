@@ -2,9 +2,9 @@
 
 // Trend chart tests: two simulated DBU drives on a BusDrives with a MonitorHub polling fast.
 
-#include "UiSimFixture.h"
-#include "bus/BusDrives.h"
-#include "monitor/MonitorHub.h"
+#include "model/bus/BusDrives.h"
+#include "model/monitor/MonitorHub.h"
+#include "tests/ui/UiSimFixture.h"
 
 namespace opentop::test {
 

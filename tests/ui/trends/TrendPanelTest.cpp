@@ -1,6 +1,6 @@
-#include "trends/TrendPanel.h"
-#include "TrendFixture.h"
-#include "trends/TrendChart.h"
+#include "ui/trends/TrendPanel.h"
+#include "tests/ui/trends/TrendFixture.h"
+#include "ui/trends/TrendChart.h"
 
 #include <QChart>
 #include <QComboBox>

@@ -1,5 +1,5 @@
 // What a trend chart draws: thinning out long series and round axis ranges.
-#include "trends/TrendPoints.h"
+#include "ui/trends/TrendPoints.h"
 
 #include <algorithm>
 #include <gtest/gtest.h>

@@ -3,19 +3,19 @@
 // proposal, Accept (writes it, then the check: a step test compared with the prediction), Reject
 // (the old gains back), Store (asks first, Reject the default, when the check failed), and a
 // relay refused on a 19200 bit/s line with wire timing, saying what to change.
-#include "main/MainWindowFixture.h"
+#include "tests/ui/main/MainWindowFixture.h"
 
-#include "SimBackend.h"
-#include "tuning/ProposalFlow.h"
+#include "sim/SimBackend.h"
+#include "ui/tuning/ProposalFlow.h"
 
-#include "tuning/AutotunePanel.h"
-#include "tuning/StepTestPanel.h"
-#include "tuning/TuningChart.h"
-#include "tuning/TuningGains.h"
-#include "tuning/TuningPage.h"
-#include "tuning/TuningRunCsv.h"
-#include "tuning/TuningRunList.h"
-#include "tuning/TuningRunsView.h"
+#include "ui/tuning/AutotunePanel.h"
+#include "ui/tuning/StepTestPanel.h"
+#include "ui/tuning/TuningChart.h"
+#include "ui/tuning/TuningGains.h"
+#include "ui/tuning/TuningPage.h"
+#include "ui/tuning/TuningRunCsv.h"
+#include "ui/tuning/TuningRunList.h"
+#include "ui/tuning/TuningRunsView.h"
 
 #include <QLineEdit>
 #include <QTemporaryDir>

@@ -1,5 +1,5 @@
 // The one stale look of every live view: grey text and the "stale" property, the age told.
-#include "widgets/StaleLook.h"
+#include "ui/widgets/StaleLook.h"
 
 #include <QLabel>
 #include <gtest/gtest.h>

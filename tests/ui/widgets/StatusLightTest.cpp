@@ -1,7 +1,7 @@
 // The status light paints the colour and tells the texts of the profile's status LED table, so
 // that changing the table changes the light.
-#include "widgets/StatusLight.h"
-#include "profile/ProfileRegistry.h"
+#include "ui/widgets/StatusLight.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <gtest/gtest.h>
 

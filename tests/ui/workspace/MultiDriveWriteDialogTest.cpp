@@ -1,6 +1,6 @@
-#include "workspace/MultiDriveWriteDialog.h"
-#include "UiSimFixture.h"
-#include "bus/BusDrives.h"
+#include "ui/workspace/MultiDriveWriteDialog.h"
+#include "model/bus/BusDrives.h"
+#include "tests/ui/UiSimFixture.h"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -1,10 +1,10 @@
 // Parameter initialisation from the drive's page: the question warns that the link and bus
 // control are lost, and afterwards the box offers to reconnect at the profile's factory line
 // settings, after the drive's power-on delay.
-#include "workspace/ParameterInitBox.h"
-#include "UiSimFixture.h"
-#include "bus/BusDrives.h"
-#include "session/DeviceParameters.h"
+#include "ui/workspace/ParameterInitBox.h"
+#include "model/bus/BusDrives.h"
+#include "model/session/DeviceParameters.h"
+#include "tests/ui/UiSimFixture.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

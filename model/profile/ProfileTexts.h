@@ -1,6 +1,6 @@
 #pragma once
 
-#include "profile/Profile.h"
+#include "model/profile/Profile.h"
 
 #include <QMap>
 #include <QString>

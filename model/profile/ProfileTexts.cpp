@@ -1,4 +1,4 @@
-#include "i18n/ProfileTexts.h"
+#include "model/profile/ProfileTexts.h"
 
 namespace opentop {
 

@@ -1,4 +1,4 @@
-#include "monitor/Freshness.h"
+#include "model/session/Freshness.h"
 
 #include <gtest/gtest.h>
 

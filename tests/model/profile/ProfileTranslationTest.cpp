@@ -1,7 +1,7 @@
-#include "i18n/ProfileTranslation.h"
+#include "model/profile/ProfileTranslation.h"
 
-#include "I18nTestSupport.h"
-#include "i18n/ProfileTexts.h"
+#include "model/profile/ProfileTexts.h"
+#include "tests/model/i18n/I18nTestSupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

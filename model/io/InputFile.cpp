@@ -1,4 +1,4 @@
-#include "files/InputFile.h"
+#include "model/io/InputFile.h"
 
 #include <QFile>
 

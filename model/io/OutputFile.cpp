@@ -1,4 +1,4 @@
-#include "files/OutputFile.h"
+#include "model/io/OutputFile.h"
 
 #include <QCoreApplication>
 #include <QDir>

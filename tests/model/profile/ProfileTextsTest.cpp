@@ -1,8 +1,8 @@
-#include "i18n/ProfileTexts.h"
+#include "model/profile/ProfileTexts.h"
 
-#include "I18nTestSupport.h"
-#include "profile/ProfileLoader.h"
-#include "profile/TestProfileJson.h"
+#include "model/profile/ProfileLoader.h"
+#include "tests/model/i18n/I18nTestSupport.h"
+#include "tests/model/profile/TestProfileJson.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

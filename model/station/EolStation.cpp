@@ -1,16 +1,16 @@
-#include "eol/EolStation.h"
+#include "model/station/EolStation.h"
 
-#include "ModbusClient.h"
-#include "access/StationAccess.h"
-#include "eol/RecipeChecker.h"
-#include "eol/RecipeFile.h"
-#include "eol/ResultUrl.h"
-#include "eol/ResultWriter.h"
-#include "eol/RetestPolicy.h"
-#include "eol/StationAlarmReset.h"
-#include "eol/StationYield.h"
-#include "eol/UnitValuesCsv.h"
-#include "profile/ProfileRegistry.h"
+#include "model/access/StationAccess.h"
+#include "model/eol/RecipeChecker.h"
+#include "model/eol/RecipeFile.h"
+#include "model/eol/ResultUrl.h"
+#include "model/eol/ResultWriter.h"
+#include "model/eol/RetestPolicy.h"
+#include "model/eol/StationAlarmReset.h"
+#include "model/eol/StationYield.h"
+#include "model/eol/UnitValuesCsv.h"
+#include "model/profile/ProfileRegistry.h"
+#include "transport/ModbusClient.h"
 
 #include <QDateTime>
 #include <QDir>

@@ -1,8 +1,8 @@
-#include "i18n/ProfileTranslation.h"
-#include "files/InputFile.h"
+#include "model/profile/ProfileTranslation.h"
+#include "model/io/InputFile.h"
 
-#include "i18n/ProfileTexts.h"
-#include "profile/SettingReference.h"
+#include "model/profile/ProfileTexts.h"
+#include "model/profile/SettingReference.h"
 
 #include <QCoreApplication>
 #include <QFile>

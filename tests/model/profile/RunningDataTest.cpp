@@ -1,7 +1,7 @@
 // The running data of a drive family and the manual's deceleration advice.
-#include "run/RunningData.h"
+#include "model/profile/RunningData.h"
 
-#include "profile/ProfileRegistry.h"
+#include "model/profile/ProfileRegistry.h"
 
 #include <QHash>
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
 #pragma once
 
-#include "eol/EolRun.h"
-#include "eol/Recipe.h"
-#include "eol/RetestPolicy.h"
-#include "eol/StationAlarmReset.h"
-#include "eol/StationLease.h"
-#include "eol/StationSafeState.h"
-#include "eol/UnitRecord.h"
+#include "model/eol/EolRun.h"
+#include "model/eol/Recipe.h"
+#include "model/eol/RetestPolicy.h"
+#include "model/eol/StationAlarmReset.h"
+#include "model/eol/StationLease.h"
+#include "model/eol/StationSafeState.h"
+#include "model/eol/UnitRecord.h"
 
 #include <QCoreApplication>
 #include <QObject>

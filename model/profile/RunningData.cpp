@@ -1,10 +1,10 @@
-#include "run/RunningData.h"
+#include "model/profile/RunningData.h"
 
 #include <cmath>
 
-#include "profile/Profile.h"
-#include "profile/RoleEvaluator.h"
-#include "profile/ValueCodec.h"
+#include "model/profile/Profile.h"
+#include "model/profile/RoleEvaluator.h"
+#include "model/profile/ValueCodec.h"
 
 #include <QRegularExpression>
 

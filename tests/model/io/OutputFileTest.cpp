@@ -2,10 +2,10 @@
 // a device or FIFO is written through (never replaced by a regular file) with every write
 // error reported, a directory is refused; and a backup file too large to be one is refused
 // without being read.
-#include "files/OutputFile.h"
-#include "FifoReader.h"
-#include "files/BackupFile.h"
-#include "profile/ProfileRegistry.h"
+#include "model/io/OutputFile.h"
+#include "model/files/BackupFile.h"
+#include "model/profile/ProfileRegistry.h"
+#include "tests/support/FifoReader.h"
 
 #include <QFile>
 #include <QFileInfo>
