@@ -299,13 +299,12 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
             loop.quit();
         });
         loop.exec();
-        bool unsafe = false;
         for (const PositionSafety& p : found) {
             if (p.running.value_or(false) || (p.answered && !p.problem.isEmpty()))
                 err << tr("station: %1").arg(p.summary()) << Qt::endl;
-            unsafe = unsafe || (p.running.value_or(false) && p.busPriority && !p.stopConfirmed);
         }
-        if (unsafe) {
+        // The operator screen's rule (PositionSafety::blocksUnits).
+        if (!PositionSafety::blockingText(found).isEmpty()) {
             err << tr("a drive of the station is not confirmed stopped; nothing was tested")
                 << Qt::endl;
             return ExitMismatch;

@@ -4641,7 +4641,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 にプロファイルで許可されていない値があるため、このバックアップは復元できません: %2</translation>
     </message>
     <message>
-        <location filename="../model/files/DriveBatchReader.cpp" line="84"/>
+        <location filename="../model/files/DriveBatchReader.cpp" line="89"/>
         <source>machine number %1 is not a drive on the bus</source>
         <translation>局番 %1 はバス上のドライバではありません</translation>
     </message>
@@ -6408,58 +6408,58 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="305"/>
+        <location filename="../cli/EolRunCommand.cpp" line="304"/>
         <source>station: %1</source>
         <translation>ステーション: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="308"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="349"/>
-        <location filename="../cli/EolRunCommand.cpp" line="370"/>
+        <location filename="../cli/EolRunCommand.cpp" line="348"/>
+        <location filename="../cli/EolRunCommand.cpp" line="369"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="374"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="374"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="393"/>
+        <location filename="../cli/EolRunCommand.cpp" line="392"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="424"/>
+        <location filename="../cli/EolRunCommand.cpp" line="423"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="426"/>
+        <location filename="../cli/EolRunCommand.cpp" line="425"/>
         <source>attempt %1</source>
         <translation>%1 回目の試験</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="433"/>
+        <location filename="../cli/EolRunCommand.cpp" line="432"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="435"/>
+        <location filename="../cli/EolRunCommand.cpp" line="434"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="440"/>
+        <location filename="../cli/EolRunCommand.cpp" line="439"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -7727,22 +7727,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>局番 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="113"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1 の停止を確認できていません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="117"/>
         <source>No limits were taken: %1</source>
         <translation>判定値は決められませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>局番 %1、ステップ %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="128"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="130"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>保持ステップの判定値をマスター品に合わせました。確認してからレシピを保存してください。</translation>
     </message>
@@ -15580,67 +15580,67 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationSafeState</name>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="28"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="44"/>
         <source>%1: no answer (%2); not checked</source>
         <translation>%1: 応答なし（%2）。確認していません</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="33"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="49"/>
         <source>%1 was RUNNING (%2)</source>
         <translation>%1 は運転中でした（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="36"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="52"/>
         <source>: stopped by the station</source>
         <translation>: ステーションが停止しました</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="39"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="55"/>
         <source>%1 stopped</source>
         <translation>%1 は停止中</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="42"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="58"/>
         <source>; control given back to its inputs (I/O priority)</source>
         <translation>。制御を入力端子に戻しました（I/O 優先）</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="83"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="99"/>
         <source>drive %1</source>
         <translation>ドライブ %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="84"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="100"/>
         <source>drive %1 (%2)</source>
         <translation>ドライブ %1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="88"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="104"/>
         <source>the recipe&apos;s family %1 is not known</source>
         <translation>レシピの機種ファミリー %1 は不明です</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="132"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="148"/>
         <source>whether its motor runs cannot be read</source>
         <translation>モーターが運転中かどうかを読み取れません</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="143"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="159"/>
         <source>it runs from its input terminals (I/O priority): not the station&apos;s to stop; stop it at the machine</source>
         <translation>入力端子で運転しています（I/O 優先）: ステーションが停止するものではありません。機械側で停止してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="168"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="184"/>
         <source>the stop was refused: %1</source>
         <translation>停止指令が拒否されました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="182"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="198"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="224"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="240"/>
         <source>control could not be given back to its inputs: %1</source>
         <translation>制御を入力端子に戻せません: %1</translation>
     </message>

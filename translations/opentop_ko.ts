@@ -4641,7 +4641,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1에 프로파일이 허용하지 않는 값이 있어 이 백업은 복원할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/files/DriveBatchReader.cpp" line="84"/>
+        <location filename="../model/files/DriveBatchReader.cpp" line="89"/>
         <source>machine number %1 is not a drive on the bus</source>
         <translation>국번 %1은(는) 버스에 있는 드라이버가 아닙니다</translation>
     </message>
@@ -6408,58 +6408,58 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="305"/>
+        <location filename="../cli/EolRunCommand.cpp" line="304"/>
         <source>station: %1</source>
         <translation>스테이션: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="308"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="349"/>
-        <location filename="../cli/EolRunCommand.cpp" line="370"/>
+        <location filename="../cli/EolRunCommand.cpp" line="348"/>
+        <location filename="../cli/EolRunCommand.cpp" line="369"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="374"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="374"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="393"/>
+        <location filename="../cli/EolRunCommand.cpp" line="392"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="424"/>
+        <location filename="../cli/EolRunCommand.cpp" line="423"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="426"/>
+        <location filename="../cli/EolRunCommand.cpp" line="425"/>
         <source>attempt %1</source>
         <translation>%1회차 검사</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="433"/>
+        <location filename="../cli/EolRunCommand.cpp" line="432"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="435"/>
+        <location filename="../cli/EolRunCommand.cpp" line="434"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="440"/>
+        <location filename="../cli/EolRunCommand.cpp" line="439"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -7727,22 +7727,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>국번 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="113"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1의 정지가 확인되지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="117"/>
         <source>No limits were taken: %1</source>
         <translation>한계값을 정하지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>국번 %1, 단계 %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="128"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="130"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>유지 단계의 한계값을 기준 제품에 맞췄습니다. 확인한 뒤 레시피를 저장하십시오.</translation>
     </message>
@@ -15580,67 +15580,67 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationSafeState</name>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="28"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="44"/>
         <source>%1: no answer (%2); not checked</source>
         <translation>%1: 응답 없음(%2), 확인하지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="33"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="49"/>
         <source>%1 was RUNNING (%2)</source>
         <translation>%1이(가) 운전 중이었습니다(%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="36"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="52"/>
         <source>: stopped by the station</source>
         <translation>: 스테이션이 정지시켰습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="39"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="55"/>
         <source>%1 stopped</source>
         <translation>%1 정지 상태</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="42"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="58"/>
         <source>; control given back to its inputs (I/O priority)</source>
         <translation>; 제어를 입력 단자로 되돌렸습니다(I/O 우선)</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="83"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="99"/>
         <source>drive %1</source>
         <translation>드라이브 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="84"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="100"/>
         <source>drive %1 (%2)</source>
         <translation>드라이브 %1(%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="88"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="104"/>
         <source>the recipe&apos;s family %1 is not known</source>
         <translation>레시피의 제품군 %1을(를) 알 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="132"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="148"/>
         <source>whether its motor runs cannot be read</source>
         <translation>모터가 운전 중인지 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="143"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="159"/>
         <source>it runs from its input terminals (I/O priority): not the station&apos;s to stop; stop it at the machine</source>
         <translation>입력 단자로 운전 중입니다(I/O 우선): 스테이션이 정지할 대상이 아닙니다. 기계에서 정지하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="168"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="184"/>
         <source>the stop was refused: %1</source>
         <translation>정지 명령이 거부되었습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="182"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="198"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>정지 미확인: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="224"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="240"/>
         <source>control could not be given back to its inputs: %1</source>
         <translation>제어를 입력 단자로 되돌릴 수 없습니다: %1</translation>
     </message>

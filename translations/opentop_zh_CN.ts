@@ -4641,7 +4641,7 @@ Configuration changes written but not stored are discarded.</source>
         <translation>%1 含有其设备描述不允许的值，因此该备份无法恢复：%2</translation>
     </message>
     <message>
-        <location filename="../model/files/DriveBatchReader.cpp" line="84"/>
+        <location filename="../model/files/DriveBatchReader.cpp" line="89"/>
         <source>machine number %1 is not a drive on the bus</source>
         <translation>站号 %1 不是总线上的驱动器</translation>
     </message>
@@ -6408,58 +6408,58 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="305"/>
+        <location filename="../cli/EolRunCommand.cpp" line="304"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="309"/>
+        <location filename="../cli/EolRunCommand.cpp" line="308"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驱动器未确认停止；未进行任何检测</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="349"/>
-        <location filename="../cli/EolRunCommand.cpp" line="370"/>
+        <location filename="../cli/EolRunCommand.cpp" line="348"/>
+        <location filename="../cli/EolRunCommand.cpp" line="369"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="374"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="375"/>
+        <location filename="../cli/EolRunCommand.cpp" line="374"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="393"/>
+        <location filename="../cli/EolRunCommand.cpp" line="392"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="424"/>
+        <location filename="../cli/EolRunCommand.cpp" line="423"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="426"/>
+        <location filename="../cli/EolRunCommand.cpp" line="425"/>
         <source>attempt %1</source>
         <translation>第 %1 次测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="433"/>
+        <location filename="../cli/EolRunCommand.cpp" line="432"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="435"/>
+        <location filename="../cli/EolRunCommand.cpp" line="434"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="440"/>
+        <location filename="../cli/EolRunCommand.cpp" line="439"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
     </message>
@@ -7727,22 +7727,22 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>站号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="113"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1 未确认停止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="117"/>
         <source>No limits were taken: %1</source>
         <translation>未确定任何限值：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>站号 %1，步骤 %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="128"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="130"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>保持步骤的限值已按标准样机确定。请确认后保存配方。</translation>
     </message>
@@ -15580,67 +15580,67 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationSafeState</name>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="28"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="44"/>
         <source>%1: no answer (%2); not checked</source>
         <translation>%1：没有响应（%2）；未检查</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="33"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="49"/>
         <source>%1 was RUNNING (%2)</source>
         <translation>%1 原本在运转（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="36"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="52"/>
         <source>: stopped by the station</source>
         <translation>：已由工作站停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="39"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="55"/>
         <source>%1 stopped</source>
         <translation>%1 已停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="42"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="58"/>
         <source>; control given back to its inputs (I/O priority)</source>
         <translation>；控制权已交还其输入端子（I/O 优先）</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="83"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="99"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="84"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="100"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="88"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="104"/>
         <source>the recipe&apos;s family %1 is not known</source>
         <translation>配方的机型系列 %1 未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="132"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="148"/>
         <source>whether its motor runs cannot be read</source>
         <translation>无法读取电机是否在运转</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="143"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="159"/>
         <source>it runs from its input terminals (I/O priority): not the station&apos;s to stop; stop it at the machine</source>
         <translation>它由输入端子控制运转（I/O 优先）：不由工作站停止；请在机台上停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="168"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="184"/>
         <source>the stop was refused: %1</source>
         <translation>停止命令被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="182"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="198"/>
         <source>NOT CONFIRMED STOPPED: %1</source>
         <translation>未确认停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/StationSafeState.cpp" line="224"/>
+        <location filename="../model/eol/StationSafeState.cpp" line="240"/>
         <source>control could not be given back to its inputs: %1</source>
         <translation>无法将控制权交还其输入端子：%1</translation>
     </message>

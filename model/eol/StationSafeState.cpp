@@ -21,6 +21,22 @@ const QString kIoPriority = QStringLiteral("ioPriority");
 
 } // namespace
 
+bool PositionSafety::blocksUnits() const
+{
+    const bool leftRunning = running.value_or(false) && busPriority && !stopConfirmed;
+    const bool leftInBusControl = stopConfirmed && !problem.isEmpty();
+    return leftRunning || leftInBusControl;
+}
+
+QString PositionSafety::blockingText(const QVector<PositionSafety>& found)
+{
+    QStringList lines;
+    for (const PositionSafety& p : found)
+        if (p.blocksUnits())
+            lines << p.summary();
+    return lines.join(QStringLiteral("; "));
+}
+
 QString PositionSafety::summary() const
 {
     // Translated in StationSafeState's context (a plain struct has none of its own).

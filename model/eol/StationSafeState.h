@@ -31,6 +31,13 @@ struct PositionSafety
     QString problem;         // what is not safe, in words; empty when safe
     QString summary() const; // one line for the operator
     bool safe() const { return answered && stopConfirmed && problem.isEmpty(); }
+    // Whether a unit may not start because of this position: a motor left turning in
+    // communication priority, or one stopped but left in bus control with a problem. No answer
+    // is no unit in the fixture yet, and a drive running from its inputs is the machine's.
+    bool blocksUnits() const;
+    // The positions that block a unit, one summary each; empty: a unit may start. The one rule
+    // of the operator screen and `eol run`.
+    static QString blockingText(const QVector<PositionSafety>& found);
 };
 
 // Puts a station's recipe positions in a safe state before its first unit, and whenever a unit

@@ -507,15 +507,7 @@ void EolStation::makeSafe(ModbusClient* client)
 
 QString EolStation::unsafeText() const
 {
-    QStringList lines;
-    for (const PositionSafety& p : m_safety) {
-        // No answer is no unit in the fixture yet; running from its inputs is the machine's.
-        const bool leftRunning = p.running.value_or(false) && p.busPriority && !p.stopConfirmed;
-        const bool leftInBusControl = p.stopConfirmed && !p.problem.isEmpty();
-        if (leftRunning || leftInBusControl)
-            lines << p.summary();
-    }
-    return lines.join(QStringLiteral("; "));
+    return PositionSafety::blockingText(m_safety);
 }
 
 } // namespace opentop

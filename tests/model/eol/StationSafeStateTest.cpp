@@ -117,3 +117,42 @@ TEST_F(StationSafeStateTest, AMotorThatDoesNotStopIsReportedAndKeptInCommunicati
         << qPrintable(found[0].summary());
     EXPECT_EQ(reg(1, 0x100D), 2) << "its inputs are not handed a motor the station cannot stop";
 }
+
+// The one rule of the operator screen and `eol run` for whether a unit may start after the
+// positions were made safe.
+TEST(PositionSafetyTest, OnlyAMotorLeftTurningOrLeftInBusControlBlocksAUnit)
+{
+    PositionSafety turning;
+    turning.machineNumber = 1;
+    turning.answered = true;
+    turning.running = true;
+    turning.busPriority = true;
+    turning.problem = QStringLiteral("did not stop");
+    EXPECT_TRUE(turning.blocksUnits());
+
+    PositionSafety heldInBus = turning;
+    heldInBus.machineNumber = 2;
+    heldInBus.stopConfirmed = true;
+    heldInBus.problem = QStringLiteral("control could not be given back to its inputs");
+    EXPECT_TRUE(heldInBus.blocksUnits());
+
+    PositionSafety absent;
+    absent.machineNumber = 3; // no unit in the fixture yet
+    EXPECT_FALSE(absent.blocksUnits());
+
+    PositionSafety machine = turning;
+    machine.machineNumber = 4;
+    machine.busPriority = false; // turning from its own inputs: the machine's, reported only
+    EXPECT_FALSE(machine.blocksUnits());
+
+    PositionSafety stopped = turning;
+    stopped.machineNumber = 5;
+    stopped.stopConfirmed = true;
+    stopped.problem.clear();
+    EXPECT_FALSE(stopped.blocksUnits());
+
+    const QString text =
+        PositionSafety::blockingText({turning, heldInBus, absent, machine, stopped});
+    EXPECT_EQ(text, turning.summary() + QStringLiteral("; ") + heldInBus.summary());
+    EXPECT_TRUE(PositionSafety::blockingText({absent, machine, stopped}).isEmpty());
+}
