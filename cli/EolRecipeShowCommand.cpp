@@ -7,6 +7,7 @@
 #include "cli/TextTable.h"
 #include "model/eol/CertificateHtml.h"
 #include "model/eol/RecipeFile.h"
+#include "model/eol/RecipeStepKinds.h"
 #include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -71,49 +72,6 @@ QString EolRecipeShowCommand::limitText(const Profile* profile, const RecipeLimi
     return tr("%1: %2").arg(what, CertificateHtml::limitsText(m));
 }
 
-QString EolRecipeShowCommand::stepText(const Profile* profile, const RecipeStep& step)
-{
-    using Type = RecipeStep::Type;
-    const QString title = Recipe::stepTitle(step.type);
-    switch (step.type) {
-    case Type::Priority:
-    case Type::NoAlarm:
-        return title;
-    case Type::Select:
-        return tr("%1 SPno%2").arg(title).arg(step.spno);
-    case Type::Speed:
-        return tr("%1 to %2")
-            .arg(title, EolSupport::withUnit(EolSupport::number(step.speed), step.unit));
-    case Type::Start:
-        return tr("%1 %2").arg(title, step.direction.toUpper());
-    case Type::WaitSpeed: {
-        const QString tolerance = EolSupport::withUnit(
-            QStringLiteral("± ") + EolSupport::number(step.tolerance), step.unit);
-        const QString target =
-            step.target ? EolSupport::number(*step.target) : tr("the drive's target speed");
-        return tr("%1 %2 %3 within %4 s")
-            .arg(title, target, tolerance, EolSupport::number(step.timeout));
-    }
-    case Type::Hold:
-        return tr("%1 for %2 s").arg(title, EolSupport::number(step.duration));
-    case Type::Stop:
-        if (step.deceleration)
-            return tr("%1: stopped within %2 s + %3 s")
-                .arg(title, EolSupport::number(*step.deceleration),
-                     EolSupport::number(step.margin));
-        return tr("%1: stopped within the deceleration time + %2 s")
-            .arg(title, EolSupport::number(step.margin));
-    case Type::Read: {
-        const QString parameter = step.limits.isEmpty() ? QString() : step.limits.first().parameter;
-        if (!step.equals.isEmpty())
-            return tr("%1: '%2' is \"%3\"")
-                .arg(title, EolSupport::label(profile, parameter), step.equals);
-        return title;
-    }
-    }
-    return title;
-}
-
 void EolRecipeShowCommand::printPosition(CliContext& context, const Recipe& recipe, int index)
 {
     QTextStream& out = context.out();
@@ -151,9 +109,19 @@ void EolRecipeShowCommand::printPosition(CliContext& context, const Recipe& reci
         return;
     }
     out << tr("  steps:") << '\n';
+    // The steps as the file has them, described by the step table (RecipeStepKinds).
+    const QJsonArray steps = RecipeFile::toObject(recipe)
+                                 .value(QStringLiteral("positions"))
+                                 .toArray()
+                                 .at(index)
+                                 .toObject()
+                                 .value(QStringLiteral("steps"))
+                                 .toArray();
     for (int i = 0; i < position.steps.size(); ++i) {
         const RecipeStep& step = position.steps.at(i);
-        out << QStringLiteral("  %1. %2\n").arg(i + 1).arg(stepText(profile, step));
+        out << QStringLiteral("  %1. %2\n")
+                   .arg(i + 1)
+                   .arg(RecipeStepKinds::line(steps.at(i).toObject(), profile));
         if (step.type == RecipeStep::Type::Read && !step.equals.isEmpty())
             continue;
         for (const RecipeLimit& l : step.limits)

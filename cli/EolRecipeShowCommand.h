@@ -18,8 +18,6 @@ public:
     QString summary() const override;
     int run(CliContext& context, const QStringList& args) override;
 
-    // "wait for speed 1500 ± 50 r/min within 7 s"; the step's limits are separate lines.
-    static QString stepText(const Profile* profile, const RecipeStep& step);
     // "'Current speed' mean: 1450 … 1550 r/min"
     static QString limitText(const Profile* profile, const RecipeLimit& limit);
 

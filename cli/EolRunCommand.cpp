@@ -300,7 +300,7 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
         });
         loop.exec();
         for (const PositionSafety& p : found) {
-            if (p.running.value_or(false) || (p.answered && !p.problem.isEmpty()))
+            if (p.worthSaying())
                 err << tr("station: %1").arg(p.summary()) << Qt::endl;
         }
         // The operator screen's rule (PositionSafety::blocksUnits).

@@ -5685,177 +5685,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="59"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>レシピを表示します: 位置、単位付きのラベル別設定、ステップ、規格値</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="69"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="83"/>
-        <source>%1 SPno%2</source>
-        <translation>%1 SPno%2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="85"/>
-        <source>%1 to %2</source>
-        <translation>%1 ～ %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="93"/>
-        <source>the drive&apos;s target speed</source>
-        <translation>ドライバの目標速度</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="94"/>
-        <source>%1 %2 %3 within %4 s</source>
-        <translation>%1 %2 %3（%4 s 以内）</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="98"/>
-        <source>%1 for %2 s</source>
-        <translation>%1（%2 s 間）</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="101"/>
-        <source>%1: stopped within %2 s + %3 s</source>
-        <translation>%1: %2 s + %3 s 以内に停止</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="104"/>
-        <source>%1: stopped within the deceleration time + %2 s</source>
-        <translation>%1: 減速時間 + %2 s 以内に停止</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="109"/>
-        <source>%1: &apos;%2&apos; is &quot;%3&quot;</source>
-        <translation>%1: &apos;%2&apos; は &quot;%3&quot;</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="126"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="84"/>
         <source>  no settings</source>
         <translation>  設定なし</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>  setting</source>
         <translation>  設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>  per-unit value</source>
         <translation>  個別値</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>range</source>
         <translation>範囲</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>from</source>
         <translation>入力元</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="141"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="99"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="102"/>
         <source>CSV file by serial</source>
         <translation>シリアル番号別 CSV ファイル</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
         <source>typed by the operator</source>
         <translation>作業者が入力</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="150"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="108"/>
         <source>  no test steps</source>
         <translation>  試験ステップなし</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="153"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="111"/>
         <source>  steps:</source>
         <translation>  ステップ:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="167"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="135"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="205"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>%1, revision %2</source>
         <translation>%1、リビジョン %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="208"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="176"/>
         <source>checksum %1</source>
         <translation>チェックサム %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
         <source>variants</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="221"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="189"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
@@ -12035,157 +11990,218 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeStepKinds</name>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="17"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
         <source>take communication priority</source>
         <translation>通信優先にする</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="20"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="32"/>
         <source>select running data</source>
         <translation>運転データを選択</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="21"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
         <source>Running data:</source>
         <translation>運転データ：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="24"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
         <source>set the speed command</source>
         <translation>速度指令を設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="25"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
         <source>Speed command:</source>
         <translation>速度指令:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="70"/>
         <source>Unit:</source>
         <translation>単位：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="39"/>
         <source>the speed command&apos;s unit</source>
         <translation>速度指令の単位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
         <source>start</source>
         <translation>運転開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="30"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="43"/>
         <source>Direction:</source>
         <translation>回転方向：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
         <source>wait for speed</source>
         <translation>速度到達を待機</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="34"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
         <source>Target speed:</source>
         <translation>目標速度：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="35"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
         <source>empty: the drive&apos;s own target speed</source>
         <translation>空欄：ドライバ自身の目標速度</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
         <source>Tolerance (±):</source>
         <translation>許容差（±）：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
         <source>the speed&apos;s unit</source>
         <translation>速度の単位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="51"/>
         <source>Within:</source>
         <translation>制限時間：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="41"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
         <source>hold and measure</source>
         <translation>保持して測定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
         <source>Duration:</source>
         <translation>保持時間：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="60"/>
         <source>Deceleration time:</source>
         <translation>減速時間：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="61"/>
         <source>empty: the drive&apos;s setting</source>
         <translation>空欄：ドライバの設定値</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="62"/>
         <source>Margin:</source>
         <translation>余裕時間：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="63"/>
         <source>check for alarms and warnings</source>
         <translation>アラームと警告をチェック</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="53"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="66"/>
         <source>read and compare</source>
         <translation>読出しと比較</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="67"/>
         <source>Parameter:</source>
         <translation>パラメータ：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="68"/>
         <source>Lower limit:</source>
         <translation>下限：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="68"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="69"/>
         <source>empty: none</source>
         <translation>空欄：なし</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="69"/>
         <source>Upper limit:</source>
         <translation>上限：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="70"/>
         <source>the value&apos;s unit</source>
         <translation>値の単位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="58"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="71"/>
         <source>Or equals:</source>
         <translation>または一致：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="72"/>
         <source>the expected text, instead of limits</source>
         <translation>規格値の代わりに期待する文字列</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="123"/>
+        <source>SPno%1</source>
+        <translation>SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="125"/>
+        <source>to %1</source>
+        <translation>%1 に設定</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="129"/>
+        <source>%1 ± %2 within %3 s</source>
+        <translation>%3 s 以内に %1 ± %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="131"/>
+        <source>the drive&apos;s target speed</source>
+        <translation>ドライバの目標速度</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="134"/>
+        <source>for %1 s; limits: %2</source>
+        <translation>%1 s 間、判定値: %2 件</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="139"/>
+        <source>stopped within %1 s + %2 s</source>
+        <translation>%1 s + %2 s 以内に停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="140"/>
+        <source>stopped within the deceleration time + %1 s</source>
+        <translation>減速時間 + %1 s 以内に停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="144"/>
+        <source>no value chosen to read yet</source>
+        <translation>読み出す値がまだ選ばれていません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="148"/>
+        <source>%1 is &quot;%2&quot;</source>
+        <translation>%1 が「%2」</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="149"/>
+        <source>%1 between %2 and %3</source>
+        <translation>%1 が %2～%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="150"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="151"/>
+        <source>any</source>
+        <translation>任意</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="163"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -12231,110 +12247,52 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>（不明なステップ：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="105"/>
-        <source>running data SPno%1</source>
-        <translation>運転データ SPno%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="107"/>
-        <source>speed command %1 %2</source>
-        <translation>速度指令 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
-        <source>%1 ± %2 %3 within %4 s</source>
-        <translation>%4 s 以内に %1 ± %2 %3</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="113"/>
-        <source>the drive&apos;s target speed</source>
-        <translation>ドライバの目標速度</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="116"/>
-        <source>%1 s, %n limit(s)</source>
-        <translation>
-            <numerusform>%1 s、規格値 %n 件</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
-        <source>stopped within %1 s + %2 s</source>
-        <translation>%1 s + %2 s 以内に停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
-        <source>stopped within the deceleration time + %1 s</source>
-        <translation>減速時間 + %1 s 以内に停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
-        <source>no value chosen to read yet</source>
-        <translation>読み出す値がまだ選ばれていません</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
-        <source>%1 is &quot;%2&quot;</source>
-        <translation>%1 が「%2」</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="130"/>
-        <source>%1 between %2 and %3 %4</source>
-        <translation>%1 が %2～%3 %4</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
-        <source>any</source>
-        <translation>制限なし</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="215"/>
         <source>No step selected</source>
         <translation>ステップが選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>ステップを追加するか、編集するステップを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="222"/>
         <source>Step %1: %2</source>
         <translation>ステップ %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="253"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="246"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>This step has no settings.</source>
         <translation>このステップに設定項目はありません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="361"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="363"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="324"/>
         <source>(unknown: %1)</source>
         <translation>（不明：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="373"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
         <source>Parameter:</source>
         <translation>パラメータ：</translation>
     </message>

@@ -5685,177 +5685,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="59"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>레시피를 표시합니다: 위치, 표시 이름과 단위를 붙인 설정, 단계와 한계값</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="69"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="83"/>
-        <source>%1 SPno%2</source>
-        <translation>%1 SPno%2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="85"/>
-        <source>%1 to %2</source>
-        <translation>%1 → %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="93"/>
-        <source>the drive&apos;s target speed</source>
-        <translation>드라이버의 목표 속도</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="94"/>
-        <source>%1 %2 %3 within %4 s</source>
-        <translation>%1 %2 %3 (%4 s 이내)</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="98"/>
-        <source>%1 for %2 s</source>
-        <translation>%1 %2 s 동안</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="101"/>
-        <source>%1: stopped within %2 s + %3 s</source>
-        <translation>%1: %2 s + %3 s 이내에 정지</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="104"/>
-        <source>%1: stopped within the deceleration time + %2 s</source>
-        <translation>%1: 감속 시간 + %2 s 이내에 정지</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="109"/>
-        <source>%1: &apos;%2&apos; is &quot;%3&quot;</source>
-        <translation>%1: &apos;%2&apos;이(가) &quot;%3&quot;</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="126"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="84"/>
         <source>  no settings</source>
         <translation>  설정 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>  setting</source>
         <translation>  설정</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>unit</source>
         <translation>단위</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>  per-unit value</source>
         <translation>  제품별 값</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>range</source>
         <translation>범위</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>from</source>
         <translation>출처</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="141"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="99"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="102"/>
         <source>CSV file by serial</source>
         <translation>시리얼 번호별 CSV 파일</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
         <source>typed by the operator</source>
         <translation>작업자 입력</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="150"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="108"/>
         <source>  no test steps</source>
         <translation>  검사 단계 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="153"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="111"/>
         <source>  steps:</source>
         <translation>  단계:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="167"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="135"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="205"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>%1, revision %2</source>
         <translation>%1, 개정 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="208"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="176"/>
         <source>checksum %1</source>
         <translation>체크섬 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>position</source>
         <translation>위치</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
         <source>variants</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="221"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="189"/>
         <source>any</source>
         <translation>모두</translation>
     </message>
@@ -12035,157 +11990,218 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeStepKinds</name>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="17"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
         <source>take communication priority</source>
         <translation>통신 우선으로 전환</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="20"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="32"/>
         <source>select running data</source>
         <translation>운전 데이터 선택</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="21"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
         <source>Running data:</source>
         <translation>운전 데이터:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="24"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
         <source>set the speed command</source>
         <translation>속도 명령 설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="25"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
         <source>Speed command:</source>
         <translation>속도 명령:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="70"/>
         <source>Unit:</source>
         <translation>단위:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="39"/>
         <source>the speed command&apos;s unit</source>
         <translation>속도 지령의 단위</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
         <source>start</source>
         <translation>기동</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="30"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="43"/>
         <source>Direction:</source>
         <translation>회전 방향:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
         <source>wait for speed</source>
         <translation>속도 대기</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="34"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
         <source>Target speed:</source>
         <translation>목표 속도:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="35"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
         <source>empty: the drive&apos;s own target speed</source>
         <translation>비워 두면: 드라이버 자체의 목표 속도</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
         <source>Tolerance (±):</source>
         <translation>허용 오차(±):</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
         <source>the speed&apos;s unit</source>
         <translation>속도의 단위</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="51"/>
         <source>Within:</source>
         <translation>제한 시간:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="41"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
         <source>hold and measure</source>
         <translation>유지 및 측정</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
         <source>Duration:</source>
         <translation>유지 시간:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
         <source>stop</source>
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="60"/>
         <source>Deceleration time:</source>
         <translation>감속 시간:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="61"/>
         <source>empty: the drive&apos;s setting</source>
         <translation>비워 두면: 드라이버의 설정값</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="62"/>
         <source>Margin:</source>
         <translation>여유 시간:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="63"/>
         <source>check for alarms and warnings</source>
         <translation>알람·경고 확인</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="53"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="66"/>
         <source>read and compare</source>
         <translation>읽기 및 비교</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="67"/>
         <source>Parameter:</source>
         <translation>파라미터:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="68"/>
         <source>Lower limit:</source>
         <translation>하한:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="68"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="69"/>
         <source>empty: none</source>
         <translation>비워 두면: 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="69"/>
         <source>Upper limit:</source>
         <translation>상한:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="70"/>
         <source>the value&apos;s unit</source>
         <translation>값의 단위</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="58"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="71"/>
         <source>Or equals:</source>
         <translation>또는 일치:</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="72"/>
         <source>the expected text, instead of limits</source>
         <translation>한계값 대신 기대하는 텍스트</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="123"/>
+        <source>SPno%1</source>
+        <translation>SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="125"/>
+        <source>to %1</source>
+        <translation>%1(으)로</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="129"/>
+        <source>%1 ± %2 within %3 s</source>
+        <translation>%3 s 이내에 %1 ± %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="131"/>
+        <source>the drive&apos;s target speed</source>
+        <translation>드라이버의 목표 속도</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="134"/>
+        <source>for %1 s; limits: %2</source>
+        <translation>%1 s 동안; 한계값: %2개</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="139"/>
+        <source>stopped within %1 s + %2 s</source>
+        <translation>%1 s + %2 s 이내 정지</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="140"/>
+        <source>stopped within the deceleration time + %1 s</source>
+        <translation>감속 시간 + %1 s 이내 정지</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="144"/>
+        <source>no value chosen to read yet</source>
+        <translation>읽을 값이 아직 선택되지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="148"/>
+        <source>%1 is &quot;%2&quot;</source>
+        <translation>%1 = &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="149"/>
+        <source>%1 between %2 and %3</source>
+        <translation>%1: %2~%3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="150"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="151"/>
+        <source>any</source>
+        <translation>모두</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="163"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -12231,110 +12247,52 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>(알 수 없는 단계: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="105"/>
-        <source>running data SPno%1</source>
-        <translation>운전 데이터 SPno%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="107"/>
-        <source>speed command %1 %2</source>
-        <translation>속도 지령 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
-        <source>%1 ± %2 %3 within %4 s</source>
-        <translation>%4 s 이내에 %1 ± %2 %3</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="113"/>
-        <source>the drive&apos;s target speed</source>
-        <translation>드라이버의 목표 속도</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="116"/>
-        <source>%1 s, %n limit(s)</source>
-        <translation>
-            <numerusform>%1 s, 한계값 %n개</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
-        <source>stopped within %1 s + %2 s</source>
-        <translation>%1 s + %2 s 이내 정지</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
-        <source>stopped within the deceleration time + %1 s</source>
-        <translation>감속 시간 + %1 s 이내 정지</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
-        <source>no value chosen to read yet</source>
-        <translation>읽을 값이 아직 선택되지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
-        <source>%1 is &quot;%2&quot;</source>
-        <translation>%1 = &quot;%2&quot;</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="130"/>
-        <source>%1 between %2 and %3 %4</source>
-        <translation>%1: %2~%3 %4</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
-        <source>any</source>
-        <translation>제한 없음</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="215"/>
         <source>No step selected</source>
         <translation>선택된 단계 없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>단계를 추가하거나 편집할 단계를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="222"/>
         <source>Step %1: %2</source>
         <translation>단계 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="253"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="246"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>This step has no settings.</source>
         <translation>이 단계에는 설정 항목이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="361"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="363"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="324"/>
         <source>(unknown: %1)</source>
         <translation>(알 수 없음: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="373"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
         <source>Parameter:</source>
         <translation>파라미터:</translation>
     </message>

@@ -5685,177 +5685,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="59"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>顯示配方：位置、依標籤列出的設定 (含單位)、步驟與限值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="69"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="83"/>
-        <source>%1 SPno%2</source>
-        <translation>%1 SPno%2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="85"/>
-        <source>%1 to %2</source>
-        <translation>%1 至 %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="93"/>
-        <source>the drive&apos;s target speed</source>
-        <translation>驅動器的目標速度</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="94"/>
-        <source>%1 %2 %3 within %4 s</source>
-        <translation>%1 %2 %3，限 %4 s 內</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="98"/>
-        <source>%1 for %2 s</source>
-        <translation>%1，持續 %2 s</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="101"/>
-        <source>%1: stopped within %2 s + %3 s</source>
-        <translation>%1：於 %2 s + %3 s 內停止</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="104"/>
-        <source>%1: stopped within the deceleration time + %2 s</source>
-        <translation>%1：於減速時間 + %2 s 內停止</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="109"/>
-        <source>%1: &apos;%2&apos; is &quot;%3&quot;</source>
-        <translation>%1：&apos;%2&apos; 為 &quot;%3&quot;</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="126"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="84"/>
         <source>  no settings</source>
         <translation>  無設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>  setting</source>
         <translation>  設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="128"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
         <source>unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>  per-unit value</source>
         <translation>  單台數值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>range</source>
         <translation>範圍</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
         <source>from</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="141"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="99"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="144"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="102"/>
         <source>CSV file by serial</source>
         <translation>依序號取自 CSV 檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="145"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
         <source>typed by the operator</source>
         <translation>由作業員輸入</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="150"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="108"/>
         <source>  no test steps</source>
         <translation>  無測試步驟</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="153"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="111"/>
         <source>  steps:</source>
         <translation>  步驟：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="167"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="135"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="205"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>%1, revision %2</source>
         <translation>%1，版次 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="208"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="176"/>
         <source>checksum %1</source>
         <translation>檢查碼 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="209"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
         <source>variants</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="221"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="189"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
@@ -12035,157 +11990,218 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeStepKinds</name>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="17"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
         <source>take communication priority</source>
         <translation>取得通訊優先</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="20"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="32"/>
         <source>select running data</source>
         <translation>選擇運轉資料</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="21"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
         <source>Running data:</source>
         <translation>運轉資料：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="24"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
         <source>set the speed command</source>
         <translation>設定速度指令</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="25"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
         <source>Speed command:</source>
         <translation>速度指令：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="70"/>
         <source>Unit:</source>
         <translation>單位：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="26"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="39"/>
         <source>the speed command&apos;s unit</source>
         <translation>速度指令的單位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="29"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
         <source>start</source>
         <translation>啟動</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="30"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="43"/>
         <source>Direction:</source>
         <translation>旋轉方向：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="33"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
         <source>wait for speed</source>
         <translation>等待到達速度</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="34"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
         <source>Target speed:</source>
         <translation>目標速度：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="35"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
         <source>empty: the drive&apos;s own target speed</source>
         <translation>留空：驅動器本身的目標速度</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="36"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
         <source>Tolerance (±):</source>
         <translation>容許誤差（±）：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="37"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
         <source>the speed&apos;s unit</source>
         <translation>速度的單位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="38"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="51"/>
         <source>Within:</source>
         <translation>時限：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="41"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
         <source>hold and measure</source>
         <translation>保持並量測</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="42"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
         <source>Duration:</source>
         <translation>保持時間：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="46"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="47"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="60"/>
         <source>Deceleration time:</source>
         <translation>減速時間：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="48"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="61"/>
         <source>empty: the drive&apos;s setting</source>
         <translation>留空：驅動器的設定值</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="49"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="62"/>
         <source>Margin:</source>
         <translation>裕度：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="50"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="63"/>
         <source>check for alarms and warnings</source>
         <translation>檢查警報與警告</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="53"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="66"/>
         <source>read and compare</source>
         <translation>讀取並比較</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="54"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="67"/>
         <source>Parameter:</source>
         <translation>參數：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="68"/>
         <source>Lower limit:</source>
         <translation>下限：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="55"/>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="68"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="69"/>
         <source>empty: none</source>
         <translation>留空：無</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="56"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="69"/>
         <source>Upper limit:</source>
         <translation>上限：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="57"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="70"/>
         <source>the value&apos;s unit</source>
         <translation>數值的單位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="58"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="71"/>
         <source>Or equals:</source>
         <translation>或等於：</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeStepKinds.cpp" line="59"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="72"/>
         <source>the expected text, instead of limits</source>
         <translation>期望的文字，取代限值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="123"/>
+        <source>SPno%1</source>
+        <translation>SPno%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="125"/>
+        <source>to %1</source>
+        <translation>設為 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="129"/>
+        <source>%1 ± %2 within %3 s</source>
+        <translation>%3 s 內達到 %1 ± %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="131"/>
+        <source>the drive&apos;s target speed</source>
+        <translation>驅動器的目標速度</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="134"/>
+        <source>for %1 s; limits: %2</source>
+        <translation>持續 %1 s；限值：%2 項</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="139"/>
+        <source>stopped within %1 s + %2 s</source>
+        <translation>%1 s + %2 s 內停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="140"/>
+        <source>stopped within the deceleration time + %1 s</source>
+        <translation>減速時間 + %1 s 內停止</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="144"/>
+        <source>no value chosen to read yet</source>
+        <translation>尚未選擇要讀取的值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="148"/>
+        <source>%1 is &quot;%2&quot;</source>
+        <translation>%1 為「%2」</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="149"/>
+        <source>%1 between %2 and %3</source>
+        <translation>%1 介於 %2 至 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="150"/>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="151"/>
+        <source>any</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/RecipeStepKinds.cpp" line="163"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
@@ -12231,110 +12247,52 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>（未知步驟：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="105"/>
-        <source>running data SPno%1</source>
-        <translation>運轉資料 SPno%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="107"/>
-        <source>speed command %1 %2</source>
-        <translation>速度指令 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="111"/>
-        <source>%1 ± %2 %3 within %4 s</source>
-        <translation>%4 s 內達到 %1 ± %2 %3</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="113"/>
-        <source>the drive&apos;s target speed</source>
-        <translation>驅動器的目標速度</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="116"/>
-        <source>%1 s, %n limit(s)</source>
-        <translation>
-            <numerusform>%1 s，%n 個限值</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="120"/>
-        <source>stopped within %1 s + %2 s</source>
-        <translation>%1 s + %2 s 內停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="122"/>
-        <source>stopped within the deceleration time + %1 s</source>
-        <translation>減速時間 + %1 s 內停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="127"/>
-        <source>no value chosen to read yet</source>
-        <translation>尚未選擇要讀取的值</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="129"/>
-        <source>%1 is &quot;%2&quot;</source>
-        <translation>%1 為「%2」</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="130"/>
-        <source>%1 between %2 and %3 %4</source>
-        <translation>%1 介於 %2 至 %3 %4</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="131"/>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="132"/>
-        <source>any</source>
-        <translation>不限</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="215"/>
         <source>No step selected</source>
         <translation>未選擇步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>新增步驟，或選擇一個步驟進行編輯。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="261"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="222"/>
         <source>Step %1: %2</source>
         <translation>步驟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="292"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="253"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="293"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="285"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="246"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="319"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
         <source>This step has no settings.</source>
         <translation>此步驟沒有設定項目。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="361"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="363"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="324"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="373"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
         <source>Parameter:</source>
         <translation>參數：</translation>
     </message>

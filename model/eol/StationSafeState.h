@@ -35,6 +35,8 @@ struct PositionSafety
     // communication priority, or one stopped but left in bus control with a problem. No answer
     // is no unit in the fixture yet, and a drive running from its inputs is the machine's.
     bool blocksUnits() const;
+    // Whether the operator is told about it: a motor found turning, or a problem.
+    bool worthSaying() const { return running.value_or(false) || (answered && !problem.isEmpty()); }
     // The positions that block a unit, one summary each; empty: a unit may start. The one rule
     // of the operator screen and `eol run`.
     static QString blockingText(const QVector<PositionSafety>& found);

@@ -286,7 +286,7 @@ TEST_F(EolRecipeCommand, ShowListsLabelsWithUnitsAndStepsInWords)
     EXPECT_EQ(line(QStringLiteral("SPno3 speed")),
               QStringLiteral("SPno3 speed 1400 … 1600 r/min CSV file by serial"));
     EXPECT_EQ(line(QStringLiteral("4.")),
-              QStringLiteral("4. wait for speed 1500 ± 50 r/min within 5 s"));
+              QStringLiteral("4. wait for speed: 1500 ± 50 r/min within 5 s"));
     EXPECT_EQ(line(QStringLiteral("'Current speed' mean")),
               QStringLiteral("'Current speed' mean: 1475 … 1525 r/min"));
     EXPECT_EQ(line(QStringLiteral("'Load rate' max")), QStringLiteral("'Load rate' max: ≤ 80 %"));

@@ -436,17 +436,6 @@
     </message>
 </context>
 <context>
-    <name>opentop::RecipeStepsEditor</name>
-    <message numerus="yes">
-        <location filename="../../ui/eol/RecipeStepsEditor.cpp" line="116"/>
-        <source>%1 s, %n limit(s)</source>
-        <translation>
-            <numerusform>%1 s, %n limit</numerusform>
-            <numerusform>%1 s, %n limits</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>opentop::RestoreDialog</name>
     <message numerus="yes">
         <location filename="../../ui/files/RestoreDialog.cpp" line="123"/>

@@ -496,7 +496,7 @@ void ProductionView::refreshNotice()
                     "giving control back to their inputs…");
     else
         for (const PositionSafety& p : m_station->safety())
-            if (p.running.value_or(false) || (p.answered && !p.problem.isEmpty()))
+            if (p.worthSaying())
                 lines << p.summary();
     m_notice->setText(lines.join(QLatin1Char('\n')));
     m_notice->setVisible(!lines.isEmpty());

@@ -96,45 +96,6 @@ QString RecipeStepsEditor::typeText(const QString& type)
     return title;
 }
 
-QString RecipeStepsEditor::summary(const QJsonObject& s)
-{
-    const QString type = s.value(kType).toString();
-    const QString unit = s.value(kUnit).toString();
-    auto n = [&s](const QString& key) { return RecipeNumberText::text(s.value(key)); };
-    if (type == QLatin1String("select"))
-        return tr("running data SPno%1").arg(n(QStringLiteral("spno")));
-    if (type == QLatin1String("speed"))
-        return tr("speed command %1 %2").arg(n(QStringLiteral("speed")), unit).trimmed();
-    if (type == QLatin1String("start"))
-        return s.value(QStringLiteral("direction")).toString().toUpper();
-    if (type == QLatin1String("waitSpeed"))
-        return tr("%1 ± %2 %3 within %4 s")
-            .arg(s.contains(QStringLiteral("target")) ? n(QStringLiteral("target"))
-                                                      : tr("the drive's target speed"),
-                 n(QStringLiteral("tolerance")), unit, n(QStringLiteral("timeout")));
-    if (type == QLatin1String("hold"))
-        return tr("%1 s, %n limit(s)", nullptr, int(s.value(kLimits).toArray().size()))
-            .arg(n(QStringLiteral("duration")));
-    if (type == QLatin1String("stop"))
-        return s.contains(QStringLiteral("deceleration"))
-                   ? tr("stopped within %1 s + %2 s")
-                         .arg(n(QStringLiteral("deceleration")), n(QStringLiteral("margin")))
-                   : tr("stopped within the deceleration time + %1 s")
-                         .arg(n(QStringLiteral("margin")));
-    if (type == QLatin1String("read")) {
-        const QString p = s.value(kParameter).toString();
-        if (p.isEmpty())
-            return tr("no value chosen to read yet");
-        if (s.contains(QStringLiteral("equals")))
-            return tr("%1 is \"%2\"").arg(p, s.value(QStringLiteral("equals")).toString());
-        return tr("%1 between %2 and %3 %4")
-            .arg(p, s.contains(QStringLiteral("lower")) ? n(QStringLiteral("lower")) : tr("any"),
-                 s.contains(QStringLiteral("upper")) ? n(QStringLiteral("upper")) : tr("any"), unit)
-            .trimmed();
-    }
-    return QString();
-}
-
 void RecipeStepsEditor::setSteps(const QJsonArray& steps)
 {
     m_steps = steps;
@@ -157,7 +118,7 @@ void RecipeStepsEditor::fillRow(int row)
     const QJsonObject step = m_steps.at(row).toObject();
     m_table->setItem(row, 0, fixedItem(QString::number(row + 1)));
     m_table->setItem(row, 1, fixedItem(typeText(step.value(kType).toString())));
-    QTableWidgetItem* what = fixedItem(summary(step));
+    QTableWidgetItem* what = fixedItem(RecipeStepKinds::summary(step, m_profile));
     what->setToolTip(what->text()); // whole, when the column is narrower
     m_table->setItem(row, 2, what);
 }
@@ -263,7 +224,8 @@ void RecipeStepsEditor::showDetail()
     const QString speedUnit = step.value(kUnit).toString();
     const RecipeStepKinds::Kind* kind = RecipeStepKinds::of(type);
     using FieldKind = RecipeStepKinds::Field::Kind;
-    for (const RecipeStepKinds::Field& f : kind ? kind->fields : QVector<RecipeStepKinds::Field>()) {
+    for (const RecipeStepKinds::Field& f :
+         kind ? kind->fields : QVector<RecipeStepKinds::Field>()) {
         const QString key = QString::fromLatin1(f.key);
         const QString label = RecipeStepKinds::fieldLabel(f);
         switch (f.kind) {
@@ -274,8 +236,7 @@ void RecipeStepsEditor::showDetail()
             if (key == QLatin1String("spno"))
                 spin->setPrefix(QStringLiteral("SPno"));
             spin->setValue(step.value(key).toInt(int(f.min)));
-            connect(spin, &QSpinBox::valueChanged, this,
-                    [this, key](int v) { setField(key, v); });
+            connect(spin, &QSpinBox::valueChanged, this, [this, key](int v) { setField(key, v); });
             form->addRow(label, spin);
             break;
         }
@@ -293,9 +254,8 @@ void RecipeStepsEditor::showDetail()
             direction->addItem(tr("CCW"), QStringLiteral("ccw"));
             direction->setCurrentIndex(
                 std::max(0, direction->findData(step.value(key).toString())));
-            connect(direction, &QComboBox::currentIndexChanged, this, [this, direction, key] {
-                setField(key, direction->currentData().toString());
-            });
+            connect(direction, &QComboBox::currentIndexChanged, this,
+                    [this, direction, key] { setField(key, direction->currentData().toString()); });
             form->addRow(label, direction);
             break;
         }
@@ -307,7 +267,8 @@ void RecipeStepsEditor::showDetail()
             addParameterField(form, key);
             break;
         case FieldKind::Limits: {
-            auto* limits = new RecipeLimitsTable(m_profile, step.value(kLimits).toArray(), m_fields);
+            auto* limits =
+                new RecipeLimitsTable(m_profile, step.value(kLimits).toArray(), m_fields);
             connect(limits, &RecipeLimitsTable::changed, this,
                     [this, limits] { setField(kLimits, limits->limits()); });
             form->addRow(limits);

@@ -40,8 +40,6 @@ public:
     // The step types in the order a run usually takes them, and their names for people.
     static QStringList types();
     static QString typeText(const QString& type);
-    // One line for the table: "Wait for speed: 1500 ± 50 r/min within 5 s".
-    static QString summary(const QJsonObject& step);
 
 signals:
     void changed();

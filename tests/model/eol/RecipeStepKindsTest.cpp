@@ -1,9 +1,9 @@
 // RecipeStepKinds is the only list of step types: every RecipeStep::Type has exactly one entry
 // with a name, a title and its fields; the parser accepts exactly the keys the table gives and
 // refuses any other; names round-trip through a recipe file.
+#include "model/eol/RecipeStepKinds.h"
 #include "model/eol/Recipe.h"
 #include "model/eol/RecipeFile.h"
-#include "model/eol/RecipeStepKinds.h"
 #include "tests/model/eol/RecipeTestSupport.h"
 
 #include <QJsonArray>
@@ -65,4 +65,33 @@ TEST(RecipeStepKindsTest, TheParserTakesTheTablesKeysAndRefusesOthers)
     doc.insert(QStringLiteral("positions"), positions);
     EXPECT_FALSE(RecipeFile::fromEdited(doc, &error));
     EXPECT_TRUE(error.contains(QStringLiteral("margin"))) << qPrintable(error);
+}
+
+// One description of a step for the editor's table and `eol recipe show`, also of a step being
+// edited that is not complete yet.
+TEST(RecipeStepKindsTest, ASummarySaysWhatTheStepDoesAlsoWhileItIsIncomplete)
+{
+    auto step = [](const char* json) { return QJsonDocument::fromJson(QByteArray(json)).object(); };
+    EXPECT_EQ(RecipeStepKinds::line(step(R"({"type":"waitSpeed","target":1500,"tolerance":50,
+                                            "unit":"r/min","timeout":5})")),
+              QStringLiteral("wait for speed: 1500 ± 50 r/min within 5 s"));
+    EXPECT_EQ(RecipeStepKinds::summary(step(R"({"type":"waitSpeed","tolerance":50,"timeout":5})")),
+              QStringLiteral("the drive's target speed ± 50 within 5 s"));
+    EXPECT_EQ(RecipeStepKinds::line(step(R"({"type":"priority"})")),
+              QStringLiteral("take communication priority"));
+    EXPECT_EQ(RecipeStepKinds::summary(step(R"({"type":"hold","duration":5,"limits":[{},{}]})")),
+              QStringLiteral("for 5 s; limits: 2"));
+    EXPECT_EQ(RecipeStepKinds::summary(step(R"({"type":"stop","margin":1})")),
+              QStringLiteral("stopped within the deceleration time + 1 s"));
+    // A read names its parameter by the profile's label; an unfinished one says so.
+    const Profile* dbu = ProfileRegistry::builtIn().family(QStringLiteral("dbu"));
+    EXPECT_EQ(RecipeStepKinds::summary(
+                  step(R"({"type":"read","parameter":"status.load","upper":80,"unit":"%"})"), dbu),
+              QStringLiteral("Load rate between any and 80 %"));
+    EXPECT_EQ(RecipeStepKinds::summary(step(R"({"type":"read"})")),
+              QStringLiteral("no value chosen to read yet"));
+    // Text typed where a number belongs is shown as typed, for the checker to name.
+    EXPECT_EQ(RecipeStepKinds::summary(step(R"({"type":"select","spno":"two"})")),
+              QStringLiteral("SPnotwo"));
+    EXPECT_TRUE(RecipeStepKinds::summary(step(R"({"type":"nonsense"})")).isEmpty());
 }

@@ -261,7 +261,7 @@ TEST_F(MainWindowEolToolsTest, RecipeEditorChecksEveryEditAndSavesOnlyARecipeTha
     }
     ASSERT_TRUE(addLimit && removeLimit);
     addLimit->click();
-    EXPECT_EQ(steps->table()->item(4, 2)->text(), QStringLiteral("5 s, 5 limits"));
+    EXPECT_EQ(steps->table()->item(4, 2)->text(), QStringLiteral("for 5 s; limits: 5"));
     stepProblems = editor->check();
     ASSERT_EQ(stepProblems.size(), 1);
     EXPECT_TRUE(stepProblems.first().message.contains(
@@ -269,7 +269,7 @@ TEST_F(MainWindowEolToolsTest, RecipeEditorChecksEveryEditAndSavesOnlyARecipeTha
         << qPrintable(stepProblems.first().message);
     removeLimit->click(); // the new one is selected
     EXPECT_EQ(limits->rowCount(), 4);
-    EXPECT_EQ(steps->table()->item(4, 2)->text(), QStringLiteral("5 s, 4 limits"));
+    EXPECT_EQ(steps->table()->item(4, 2)->text(), QStringLiteral("for 5 s; limits: 4"));
     EXPECT_EQ(editor->check().size(), 1);
 
     // Fixed: saved, signed, and it loads as a recipe with the new value.
