@@ -6492,93 +6492,88 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="141"/>
         <source>no results database</source>
         <translation>結果データベースがありません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="177"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>opening the results database</source>
         <translation>結果データベースを開いています</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="179"/>
+        <location filename="../model/station/EolStation.cpp" line="140"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>接続できません（%1）。自動で再試行中</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="197"/>
+        <location filename="../model/station/EolStation.cpp" line="158"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="204"/>
+        <location filename="../model/station/EolStation.cpp" line="165"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="206"/>
+        <location filename="../model/station/EolStation.cpp" line="167"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="208"/>
+        <location filename="../model/station/EolStation.cpp" line="169"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="218"/>
+        <location filename="../model/station/EolStation.cpp" line="180"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: シリアル番号 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="222"/>
-        <location filename="../model/station/EolStation.cpp" line="270"/>
+        <location filename="../model/station/EolStation.cpp" line="184"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="226"/>
+        <location filename="../model/station/EolStation.cpp" line="188"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="230"/>
+        <location filename="../model/station/EolStation.cpp" line="192"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="252"/>
-        <source>this recipe takes per-unit values from a CSV file: open it first</source>
-        <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="272"/>
+        <location filename="../model/station/EolStation.cpp" line="221"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>ステーションのドライブが安全ではありません: %1</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="306"/>
+        <location filename="../model/station/EolStation.cpp" line="256"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>シリアル %1 を再試験、%2 が許可:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="342"/>
+        <location filename="../model/station/EolStation.cpp" line="292"/>
         <source>no unit was started yet</source>
         <translation>まだ試験を開始した製品がありません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="354"/>
+        <location filename="../model/station/EolStation.cpp" line="304"/>
         <source>cancelled before it started</source>
         <translation>開始前に取り消されました</translation>
     </message>
@@ -15533,6 +15528,14 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationLogin.cpp" line="136"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>ユーザーが設定されていません: 誰でも実行・編集・終了できます。opentop-cli eol user add でユーザーを設定してください</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationRecipe</name>
+    <message>
+        <location filename="../model/station/StationRecipe.cpp" line="68"/>
+        <source>this recipe takes per-unit values from a CSV file: open it first</source>
+        <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
     </message>
 </context>
 <context>

@@ -6492,93 +6492,88 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="141"/>
         <source>no results database</source>
         <translation>결과 데이터베이스 없음</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="177"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>opening the results database</source>
         <translation>결과 데이터베이스를 여는 중</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="179"/>
+        <location filename="../model/station/EolStation.cpp" line="140"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="197"/>
+        <location filename="../model/station/EolStation.cpp" line="158"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="204"/>
+        <location filename="../model/station/EolStation.cpp" line="165"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="206"/>
+        <location filename="../model/station/EolStation.cpp" line="167"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="208"/>
+        <location filename="../model/station/EolStation.cpp" line="169"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="218"/>
+        <location filename="../model/station/EolStation.cpp" line="180"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: 시리얼 번호 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="222"/>
-        <location filename="../model/station/EolStation.cpp" line="270"/>
+        <location filename="../model/station/EolStation.cpp" line="184"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="226"/>
+        <location filename="../model/station/EolStation.cpp" line="188"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="230"/>
+        <location filename="../model/station/EolStation.cpp" line="192"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="252"/>
-        <source>this recipe takes per-unit values from a CSV file: open it first</source>
-        <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="272"/>
+        <location filename="../model/station/EolStation.cpp" line="221"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="306"/>
+        <location filename="../model/station/EolStation.cpp" line="256"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>시리얼 %1 재시험, %2 허가: %3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="342"/>
+        <location filename="../model/station/EolStation.cpp" line="292"/>
         <source>no unit was started yet</source>
         <translation>아직 검사를 시작한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="354"/>
+        <location filename="../model/station/EolStation.cpp" line="304"/>
         <source>cancelled before it started</source>
         <translation>시작 전에 취소됨</translation>
     </message>
@@ -15533,6 +15528,14 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationLogin.cpp" line="136"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>사용자가 설정되지 않았습니다: 누구나 실행, 편집, 종료할 수 있습니다. opentop-cli eol user add로 사용자를 설정하십시오</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationRecipe</name>
+    <message>
+        <location filename="../model/station/StationRecipe.cpp" line="68"/>
+        <source>this recipe takes per-unit values from a CSV file: open it first</source>
+        <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
     </message>
 </context>
 <context>

@@ -6492,93 +6492,88 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="141"/>
         <source>no results database</source>
         <translation>无结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="177"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>opening the results database</source>
         <translation>正在打开结果数据库</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="179"/>
+        <location filename="../model/station/EolStation.cpp" line="140"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>无法连接（%1）；正在自动重试</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="197"/>
+        <location filename="../model/station/EolStation.cpp" line="158"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="204"/>
+        <location filename="../model/station/EolStation.cpp" line="165"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在打开结果数据库；请稍后再试</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="206"/>
+        <location filename="../model/station/EolStation.cpp" line="167"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>结果数据库未打开；不记录就不进行测试</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="208"/>
+        <location filename="../model/station/EolStation.cpp" line="169"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="218"/>
+        <location filename="../model/station/EolStation.cpp" line="180"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units：序列号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="222"/>
-        <location filename="../model/station/EolStation.cpp" line="270"/>
+        <location filename="../model/station/EolStation.cpp" line="184"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="226"/>
+        <location filename="../model/station/EolStation.cpp" line="188"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驱动器确认安全后，单元 %1 会立即开始</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="230"/>
+        <location filename="../model/station/EolStation.cpp" line="192"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="252"/>
-        <source>this recipe takes per-unit values from a CSV file: open it first</source>
-        <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="272"/>
+        <location filename="../model/station/EolStation.cpp" line="221"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>工作站有驱动器不安全：%1</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="306"/>
+        <location filename="../model/station/EolStation.cpp" line="256"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>序列号 %1 重新测试,由 %2 批准:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="342"/>
+        <location filename="../model/station/EolStation.cpp" line="292"/>
         <source>no unit was started yet</source>
         <translation>尚未开始任何产品的测试</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="354"/>
+        <location filename="../model/station/EolStation.cpp" line="304"/>
         <source>cancelled before it started</source>
         <translation>开始前已取消</translation>
     </message>
@@ -15533,6 +15528,14 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationLogin.cpp" line="136"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>尚未设置用户：任何人都可运行、编辑和退出；请用 opentop-cli eol user add 设置用户</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationRecipe</name>
+    <message>
+        <location filename="../model/station/StationRecipe.cpp" line="68"/>
+        <source>this recipe takes per-unit values from a CSV file: open it first</source>
+        <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
     </message>
 </context>
 <context>

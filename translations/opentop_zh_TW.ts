@@ -6492,93 +6492,88 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="141"/>
         <source>no results database</source>
         <translation>無結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="177"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>opening the results database</source>
         <translation>正在開啟結果資料庫</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="179"/>
+        <location filename="../model/station/EolStation.cpp" line="140"/>
         <source>NOT REACHABLE (%1); trying again by itself</source>
         <translation>無法連線（%1）；自動重試中</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="197"/>
+        <location filename="../model/station/EolStation.cpp" line="158"/>
         <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
         <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="204"/>
+        <location filename="../model/station/EolStation.cpp" line="165"/>
         <source>the results database is being opened; try again in a moment</source>
         <translation>正在開啟結果資料庫；請稍後再試</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="206"/>
+        <location filename="../model/station/EolStation.cpp" line="167"/>
         <source>the results database is not open; nothing is tested unless it is recorded</source>
         <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="208"/>
+        <location filename="../model/station/EolStation.cpp" line="169"/>
         <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
         <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="218"/>
+        <location filename="../model/station/EolStation.cpp" line="180"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units：序號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="222"/>
-        <location filename="../model/station/EolStation.cpp" line="270"/>
+        <location filename="../model/station/EolStation.cpp" line="184"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="226"/>
+        <location filename="../model/station/EolStation.cpp" line="188"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驅動器確認安全後，單元 %1 會立即開始</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="230"/>
+        <location filename="../model/station/EolStation.cpp" line="192"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="252"/>
-        <source>this recipe takes per-unit values from a CSV file: open it first</source>
-        <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="272"/>
+        <location filename="../model/station/EolStation.cpp" line="221"/>
         <source>a drive of the station is not safe: %1</source>
         <translation>工作站有驅動器不安全：%1</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="306"/>
+        <location filename="../model/station/EolStation.cpp" line="256"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>序號 %1 重新測試,由 %2 核准:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="342"/>
+        <location filename="../model/station/EolStation.cpp" line="292"/>
         <source>no unit was started yet</source>
         <translation>尚未開始任何產品的測試</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="354"/>
+        <location filename="../model/station/EolStation.cpp" line="304"/>
         <source>cancelled before it started</source>
         <translation>開始前已取消</translation>
     </message>
@@ -15533,6 +15528,14 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../ui/eol/StationLogin.cpp" line="136"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>尚未設定使用者：任何人都可執行、編輯和離開；請以 opentop-cli eol user add 設定使用者</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationRecipe</name>
+    <message>
+        <location filename="../model/station/StationRecipe.cpp" line="68"/>
+        <source>this recipe takes per-unit values from a CSV file: open it first</source>
+        <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
     </message>
 </context>
 <context>

@@ -1,14 +1,11 @@
 #include "model/station/EolStation.h"
 
 #include "model/access/StationAccess.h"
-#include "model/eol/RecipeChecker.h"
-#include "model/eol/RecipeFile.h"
 #include "model/eol/ResultUrl.h"
 #include "model/eol/ResultWriter.h"
 #include "model/eol/RetestPolicy.h"
 #include "model/eol/StationAlarmReset.h"
 #include "model/eol/StationYield.h"
-#include "model/eol/UnitValuesCsv.h"
 #include "model/profile/ProfileRegistry.h"
 #include "transport/ModbusClient.h"
 
@@ -54,50 +51,14 @@ EolStation::~EolStation()
 
 bool EolStation::loadRecipe(const QString& path, QStringList* problems)
 {
-    QString error;
-    QString checksum;
-    const std::optional<Recipe> recipe = RecipeFile::load(path, &error, &checksum);
-    if (!recipe) {
-        *problems = {error};
+    if (!m_recipe.load(path, problems))
         return false;
-    }
-    const QVector<RecipeProblem> found = RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
-    if (!found.isEmpty()) {
-        problems->clear();
-        for (const RecipeProblem& p : found)
-            *problems << p.message;
-        return false;
-    }
-    m_recipe = *recipe;
-    m_checksum = checksum;
-    m_recipePath = path;
-    m_hasRecipe = true;
     m_safe = false; // its positions are made safe before its first unit
-    m_csv.reset();
     m_latchedAlarms.clear();
     refreshYield();
     if (m_writer->isOpen())
-        m_access->refresh(m_checksum); // is this checksum approved?
+        m_access->refresh(m_recipe.checksum()); // is this checksum approved?
     return true;
-}
-
-bool EolStation::loadUnitValues(const QString& path, QString* error)
-{
-    std::optional<UnitValuesCsv> csv = UnitValuesCsv::load(path, error);
-    if (!csv)
-        return false;
-    m_csv = std::make_unique<UnitValuesCsv>(std::move(*csv));
-    return true;
-}
-
-QVector<QPair<int, RecipeUnitValue>> EolStation::operatorValues() const
-{
-    QVector<QPair<int, RecipeUnitValue>> values;
-    for (const RecipePosition& p : m_recipe.positions)
-        for (const RecipeUnitValue& u : p.unitValues)
-            if (u.source == RecipeUnitValue::Source::Operator)
-                values.append({p.machineNumber, u});
-    return values;
 }
 
 void EolStation::openDatabase(const QString& url)
@@ -110,7 +71,7 @@ void EolStation::openDatabase(const QString& url)
                            m_dbError.clear();
                            m_openDelayS = 2;
                            refreshYield();
-                           m_access->refresh(m_checksum);
+                           m_access->refresh(m_recipe.checksum());
                            if (!o.interrupted.isEmpty()) {
                                m_interrupted = o.interrupted;
                                emit interruptedFound(o.interrupted);
@@ -133,7 +94,7 @@ bool EolStation::openDatabaseAndWait(const QString& url, QString* error)
     if (!o.ok && error)
         *error = o.error;
     if (o.ok)
-        m_access->refresh(m_checksum);
+        m_access->refresh(m_recipe.checksum());
     if (o.ok && !o.interrupted.isEmpty()) {
         m_interrupted = o.interrupted;
         emit interruptedFound(o.interrupted);
@@ -188,7 +149,7 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         *error = tr("a unit is being tested");
         return false;
     }
-    if (!m_hasRecipe) {
+    if (!m_recipe.has()) {
         *error = tr("open a recipe first");
         return false;
     }
@@ -210,7 +171,8 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
                            .arg(m_dbError);
         return false;
     }
-    const QString refused = m_access->runRefusal(m_recipe.product, m_recipe.revision);
+    const QString refused =
+        m_access->runRefusal(m_recipe.recipe().product, m_recipe.recipe().revision);
     if (!refused.isEmpty()) {
         *error = refused;
         if (m_access->user())
@@ -234,31 +196,18 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     options.serial = serial.trimmed();
     options.station = m_station;
     options.operatorName = m_access->isManaged() ? m_access->operatorName() : m_operator;
-    options.recipeChecksum = m_checksum;
+    options.recipeChecksum = m_recipe.checksum();
     if (m_access->isManaged() && m_access->approval()) {
         options.approvalId = m_access->approval()->id;
         options.approver = m_access->approval()->approver;
     }
-    options.unitValues = typed;
     options.timing = m_timing;
     options.writer = m_writer.get();
     options.traffic = traffic;
-    bool needsCsv = false;
-    for (const RecipePosition& p : m_recipe.positions)
-        for (const RecipeUnitValue& u : p.unitValues)
-            needsCsv = needsCsv || u.source == RecipeUnitValue::Source::Csv;
-    if (needsCsv) {
-        if (!m_csv) {
-            *error = tr("this recipe takes per-unit values from a CSV file: open it first");
-            return false;
-        }
-        const auto values =
-            m_csv->valuesFor(m_recipe, ProfileRegistry::builtIn(), options.serial, error);
-        if (!values)
-            return false;
-        for (const UnitValuesCsv::Value& v : *values)
-            options.unitValues[v.machineNumber][v.parameter] = v.value;
-    }
+    const auto values = m_recipe.unitValues(options.serial, typed, error);
+    if (!values)
+        return false;
+    options.unitValues = *values;
     // First the serial's earlier tests are checked against the recipe's retest rules, then the
     // positions are made safe (a station killed mid-test may have left a motor turning); the
     // unit starts by itself once both allow it, or startRefused() / retestNeedsTechnician()
@@ -277,7 +226,8 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
     };
     m_lastStart = {options.serial, typed, traffic};
     const quint64 token = ++m_startToken;
-    RetestPolicy::check(m_writer.get(), m_recipe.retest, options.serial, m_checksum, this,
+    RetestPolicy::check(m_writer.get(), m_recipe.recipe().retest, options.serial,
+                        m_recipe.checksum(), this,
                         [this, token, retestBy,
                          client = QPointer<ModbusClient>(client)](const RetestPolicy::Decision& d) {
                             if (token == m_startToken && m_pendingStart) // else cancelled since
@@ -320,7 +270,7 @@ void EolStation::begin(ModbusClient* client, TrafficLog* traffic, const EolRun::
     EolRun::Options options = given;
     options.traffic = traffic;
     delete m_run;
-    m_run = new EolRun(client, ProfileRegistry::builtIn(), m_recipe, options, this);
+    m_run = new EolRun(client, ProfileRegistry::builtIn(), m_recipe.recipe(), options, this);
     connect(m_run, &EolRun::phaseChanged, this, &EolStation::phaseChanged);
     connect(m_run, &EolRun::measured, this, &EolStation::measured);
     connect(m_run, &EolRun::speedSampled, this, &EolStation::speedSampled);
@@ -390,7 +340,7 @@ void EolStation::finished(const UnitRecord& record)
     } else {
         count(record);
     }
-    m_access->refresh(m_checksum); // an approval superseded meanwhile stops the next unit
+    m_access->refresh(m_recipe.checksum()); // an approval superseded meanwhile stops the next unit
     m_last.prepend(record);
     if (m_last.size() > kLastUnits)
         m_last.removeLast();
@@ -406,15 +356,16 @@ void EolStation::count(const UnitRecord&)
 
 void EolStation::refreshYield()
 {
-    if (m_hasRecipe && m_writer->isOpen())
-        m_yield->refresh(m_station, m_checksum);
+    if (m_recipe.has() && m_writer->isOpen())
+        m_yield->refresh(m_station, m_recipe.checksum());
 }
 
 void EolStation::resetAlarmsAndRetry(ModbusClient* client)
 {
     if (m_latchedAlarms.isEmpty() || m_alarmReset || isRunning() || m_pendingStart || !client)
         return;
-    m_alarmReset = new StationAlarmReset(client, ProfileRegistry::builtIn(), m_recipe, this);
+    m_alarmReset =
+        new StationAlarmReset(client, ProfileRegistry::builtIn(), m_recipe.recipe(), this);
     emit alarmResetStarted(m_latchedAlarms);
     m_alarmReset->reset(m_latchedAlarms, [this, client = QPointer<ModbusClient>(client)](
                                              const QVector<StationAlarmReset::Result>& results) {
@@ -486,10 +437,10 @@ void EolStation::sendWaitingResultsNow()
 
 void EolStation::makeSafe(ModbusClient* client)
 {
-    if (!client || !m_hasRecipe || m_safeState || isRunning())
+    if (!client || !m_recipe.has() || m_safeState || isRunning())
         return;
     m_client = client;
-    m_safeState = new StationSafeState(client, ProfileRegistry::builtIn(), m_recipe, this);
+    m_safeState = new StationSafeState(client, ProfileRegistry::builtIn(), m_recipe.recipe(), this);
     m_safeState->setStopTiming(m_stopTiming);
     emit safetyChanged();
     m_safeState->run([this](const QVector<PositionSafety>& found) {

@@ -7,6 +7,7 @@
 #include "model/eol/StationLease.h"
 #include "model/eol/StationSafeState.h"
 #include "model/eol/UnitRecord.h"
+#include "model/station/StationRecipe.h"
 
 #include <QCoreApplication>
 #include <QObject>
@@ -23,7 +24,6 @@ class ResultWriter;
 class StationYield;
 class StationAccess;
 class TrafficLog;
-class UnitValuesCsv;
 
 // An end-of-line station as the operator screen drives it: one recipe, one results database,
 // units one after another (EolRun), this shift's counters and last units. The screen only
@@ -38,14 +38,20 @@ public:
     // Loads and checks a recipe; false with the reasons (every checker problem) when it may not
     // be run. The recipe stays as it was on failure.
     bool loadRecipe(const QString& path, QStringList* problems);
-    bool hasRecipe() const { return m_hasRecipe; }
-    const Recipe& recipe() const { return m_recipe; }
-    QString recipePath() const { return m_recipePath; }
-    QString recipeChecksum() const { return m_checksum; } // what an approval names
-    bool loadUnitValues(const QString& path, QString* error);
-    bool hasUnitValues() const { return bool(m_csv); }
+    bool hasRecipe() const { return m_recipe.has(); }
+    const Recipe& recipe() const { return m_recipe.recipe(); }
+    QString recipePath() const { return m_recipe.path(); }
+    QString recipeChecksum() const { return m_recipe.checksum(); } // what an approval names
+    bool loadUnitValues(const QString& path, QString* error)
+    {
+        return m_recipe.loadUnitValues(path, error);
+    }
+    bool hasUnitValues() const { return m_recipe.hasUnitValues(); }
     // Per-unit values the operator types (the recipe's "operator" ones) for the next unit.
-    QVector<QPair<int, RecipeUnitValue>> operatorValues() const;
+    QVector<QPair<int, RecipeUnitValue>> operatorValues() const
+    {
+        return m_recipe.operatorValues();
+    }
 
     // Opens the results database on its own thread (`url` empty: OPENTOP_EOL_DB, else the
     // default file, made when missing); the station's leftovers from a crash become
@@ -169,11 +175,7 @@ private:
     void begin(ModbusClient* client, TrafficLog* traffic, const EolRun::Options& options);
     QString unsafeText() const;
 
-    Recipe m_recipe;
-    bool m_hasRecipe = false;
-    QString m_recipePath;
-    QString m_checksum;
-    std::unique_ptr<UnitValuesCsv> m_csv;
+    StationRecipe m_recipe; // the recipe and each unit's values
     std::unique_ptr<ResultWriter> m_writer;
     StationAccess* m_access;
     QString m_station;
