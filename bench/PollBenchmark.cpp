@@ -68,7 +68,10 @@ bool PollBenchmark::run(const BenchEnvironment& env, BenchReport& report, QStrin
 bool PollBenchmark::stackOverhead(const BenchEnvironment& env, BenchReport& report, QString* error)
 {
     SimulatorProcess sim;
-    if (!sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@%1").arg(kSlave)}, error))
+    // The drive hears only its own rate: the simulator at the rate both loops ask at.
+    if (!sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@%1").arg(kSlave),
+                    QStringLiteral("--baud"), QStringLiteral("115200")},
+                   error))
         return false;
     QVector<ReadBlockPlan> plan;
     const QStringList names = StackPoller::backupSettings(dbu(), &plan);
