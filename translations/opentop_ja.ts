@@ -10428,77 +10428,72 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="65"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="89"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="91"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="189"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
-        <source>READY</source>
-        <translation>準備完了</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="226"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="227"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10507,215 +10502,169 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
         <source>open another recipe</source>
         <translation>別のレシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="257"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="274"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>another</source>
         <translation>別のユニット</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="324"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="344"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="495"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="180"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
-        <source>NOT STARTED</source>
-        <translation>未開始</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="366"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="343"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
-        <source>TESTING</source>
-        <translation>試験中</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="371"/>
         <source>Unit %1 — attempt %2</source>
         <translation>製品 %1 — %2 回目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="392"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="405"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1、未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="410"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（このステーションに保管）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="424"/>
-        <source>NOT RECORDED</source>
-        <translation>未記録</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="446"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
-        <source>STATION ERROR</source>
-        <translation>ステーションエラー</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="469"/>
-        <source>%1
-Not a verdict on the unit: fix the cause and test it again.</source>
-        <translation>%1
-製品の判定ではありません。原因を取り除いてから再試験してください。</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="482"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="486"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>it does not answer</source>
         <translation>データベースが応答しません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="489"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="475"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="390"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="447"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="460"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="190"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="459"/>
-        <source>PASS</source>
-        <translation>合格</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
-        <source>FAIL</source>
-        <translation>不合格</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
-        <source>ABORTED</source>
-        <translation>中止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="398"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="401"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -18576,6 +18525,61 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
         <source>the variant of %1 was not given</source>
         <translation>%1 の機種が指定されていません</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VerdictLook</name>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="16"/>
+        <source>READY</source>
+        <translation>準備完了</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="17"/>
+        <source>TESTING</source>
+        <translation>試験中</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="18"/>
+        <source>NOT STARTED</source>
+        <translation>未開始</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="20"/>
+        <source>PASS</source>
+        <translation>合格</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="21"/>
+        <source>FAIL</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="22"/>
+        <source>STATION ERROR</source>
+        <translation>ステーションエラー</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="24"/>
+        <source>ABORTED</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="25"/>
+        <source>NOT RECORDED</source>
+        <translation>未記録</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="66"/>
+        <source>Unit %1</source>
+        <translation>製品 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="69"/>
+        <source>%1
+Not a verdict on the unit: fix the cause and test it again.</source>
+        <translation>%1
+製品の判定ではありません。原因を取り除いてから再試験してください。</translation>
     </message>
 </context>
 <context>

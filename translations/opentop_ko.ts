@@ -10428,77 +10428,72 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="65"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="89"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="91"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="189"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
-        <source>READY</source>
-        <translation>준비 완료</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="226"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="227"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10507,215 +10502,169 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
         <source>open another recipe</source>
         <translation>다른 레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="257"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="274"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>another</source>
         <translation>다른 유닛</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="324"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="344"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="495"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="180"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
-        <source>NOT STARTED</source>
-        <translation>시작 안 됨</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="366"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="343"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
-        <source>TESTING</source>
-        <translation>검사 중</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="371"/>
         <source>Unit %1 — attempt %2</source>
         <translation>제품 %1 — %2회차</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="392"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="405"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1, 기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="410"/>
         <source>%1 (kept on this station)</source>
         <translation>%1 (이 스테이션에 보관)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="424"/>
-        <source>NOT RECORDED</source>
-        <translation>기록 안 됨</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="446"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
-        <source>STATION ERROR</source>
-        <translation>스테이션 오류</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="469"/>
-        <source>%1
-Not a verdict on the unit: fix the cause and test it again.</source>
-        <translation>%1
-제품 판정이 아닙니다: 원인을 해결한 뒤 다시 검사하십시오.</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="482"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="486"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>it does not answer</source>
         <translation>데이터베이스가 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="489"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="475"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="390"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="447"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="460"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="190"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="459"/>
-        <source>PASS</source>
-        <translation>합격</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
-        <source>FAIL</source>
-        <translation>불합격</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
-        <source>ABORTED</source>
-        <translation>중지됨</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="398"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="401"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -18576,6 +18525,61 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
         <source>the variant of %1 was not given</source>
         <translation>%1의 기종이 지정되지 않았습니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VerdictLook</name>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="16"/>
+        <source>READY</source>
+        <translation>준비 완료</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="17"/>
+        <source>TESTING</source>
+        <translation>검사 중</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="18"/>
+        <source>NOT STARTED</source>
+        <translation>시작 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="20"/>
+        <source>PASS</source>
+        <translation>합격</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="21"/>
+        <source>FAIL</source>
+        <translation>불합격</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="22"/>
+        <source>STATION ERROR</source>
+        <translation>스테이션 오류</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="24"/>
+        <source>ABORTED</source>
+        <translation>중지됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="25"/>
+        <source>NOT RECORDED</source>
+        <translation>기록 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="66"/>
+        <source>Unit %1</source>
+        <translation>제품 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="69"/>
+        <source>%1
+Not a verdict on the unit: fix the cause and test it again.</source>
+        <translation>%1
+제품 판정이 아닙니다: 원인을 해결한 뒤 다시 검사하십시오.</translation>
     </message>
 </context>
 <context>

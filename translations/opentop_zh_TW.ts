@@ -10428,77 +10428,72 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="65"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="66"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="78"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="89"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="91"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="189"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
-        <source>READY</source>
-        <translation>就緒</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="226"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="227"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10507,215 +10502,169 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
         <source>open another recipe</source>
         <translation>開啟其他配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="257"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="263"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="258"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="274"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="275"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="308"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序號 %1 未被接受：單元 %2 正在檢測中。請在其判定結果顯示後再掃描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="310"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>another</source>
         <translation>另一個單元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="324"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="325"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="344"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>單元 %1：先使工作站的驅動器進入安全狀態…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="495"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驅動器進入安全狀態：逐一讀取、停止仍在運轉者、將控制權交還其輸入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="173"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="180"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
-        <source>NOT STARTED</source>
-        <translation>未開始</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="363"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="366"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="343"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="367"/>
-        <source>TESTING</source>
-        <translation>測試中</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="368"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="371"/>
         <source>Unit %1 — attempt %2</source>
         <translation>產品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="392"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="405"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="407"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="410"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="424"/>
-        <source>NOT RECORDED</source>
-        <translation>未記錄</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="446"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
-        <source>STATION ERROR</source>
-        <translation>工站錯誤</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="469"/>
-        <source>%1
-Not a verdict on the unit: fix the cause and test it again.</source>
-        <translation>%1
-此結果並非產品判定：請排除原因後重新測試。</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="482"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="486"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
         <source>it does not answer</source>
         <translation>資料庫沒有回應</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="489"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="475"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="188"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="369"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="390"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="447"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="460"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="190"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="425"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="459"/>
-        <source>PASS</source>
-        <translation>合格</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="463"/>
-        <source>FAIL</source>
-        <translation>不合格</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
-        <source>ABORTED</source>
-        <translation>已中止</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="398"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="401"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="399"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -18576,6 +18525,61 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
         <source>the variant of %1 was not given</source>
         <translation>未指定 %1 的機型</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::VerdictLook</name>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="16"/>
+        <source>READY</source>
+        <translation>就緒</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="17"/>
+        <source>TESTING</source>
+        <translation>測試中</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="18"/>
+        <source>NOT STARTED</source>
+        <translation>未開始</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="20"/>
+        <source>PASS</source>
+        <translation>合格</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="21"/>
+        <source>FAIL</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="22"/>
+        <source>STATION ERROR</source>
+        <translation>工站錯誤</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="24"/>
+        <source>ABORTED</source>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="25"/>
+        <source>NOT RECORDED</source>
+        <translation>未記錄</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="66"/>
+        <source>Unit %1</source>
+        <translation>產品 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/VerdictLook.cpp" line="69"/>
+        <source>%1
+Not a verdict on the unit: fix the cause and test it again.</source>
+        <translation>%1
+此結果並非產品判定：請排除原因後重新測試。</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,7 @@
 #include "ui/eol/ProductionView.h"
 
+#include "ui/eol/VerdictLook.h"
+
 #include "model/access/StationAccess.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/station/EolStation.h"
@@ -170,14 +172,14 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     connect(m_station, &EolStation::interruptedFound, this, [this] { refreshNotice(); });
     connect(m_station, &EolStation::safetyChanged, this, [this] { refreshNotice(); });
     connect(m_station, &EolStation::startRefused, this, [this](const QString&, const QString& why) {
-        showVerdict(tr("NOT STARTED"), QStringLiteral("#8a6d00"), why);
+        showVerdict(VerdictLook::State::NotStarted, why);
         m_cancel->setEnabled(false);
         refreshRecipe();
         focusSerial();
     });
     connect(m_station, &EolStation::retestNeedsTechnician, this,
             [this](const QString&, const QString& why) {
-                showVerdict(tr("NOT STARTED"), QStringLiteral("#8a6d00"), why);
+                showVerdict(VerdictLook::State::NotStarted, why);
                 m_cancel->setEnabled(false);
                 focusSerial();
             });
@@ -188,7 +190,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
         m_reason->setText(what.isEmpty() ? tr("Unit %1").arg(serial)
                                          : tr("Unit %1: %2…").arg(serial, what));
     });
-    showVerdict(tr("READY"), QStringLiteral("#5f6b76"), QString());
+    showVerdict(VerdictLook::State::Ready, QString());
     refreshRecipe();
     refreshCounters();
     refreshNotice();
@@ -288,11 +290,12 @@ void ProductionView::refreshCounters()
     m_counters->refresh();
 }
 
-void ProductionView::showVerdict(const QString& text, const QString& colour, const QString& reason)
+void ProductionView::showVerdict(VerdictLook::State state, const QString& reason)
 {
-    m_verdict->setText(text);
+    m_verdict->setText(VerdictLook::text(state));
     m_verdict->setStyleSheet(
-        QStringLiteral("QLabel { background: %1; color: white; border-radius: 6px; }").arg(colour));
+        QStringLiteral("QLabel { background: %1; color: white; border-radius: 6px; }")
+            .arg(VerdictLook::colour(state)));
     m_reason->setText(reason);
 }
 
@@ -335,12 +338,12 @@ void ProductionView::startUnit()
     }
     QString error;
     if (!m_station->start(m_client(), m_traffic, serial, typed, &error)) {
-        showVerdict(tr("NOT STARTED"), QStringLiteral("#8a6d00"), error);
+        showVerdict(VerdictLook::State::NotStarted, error);
         focusSerial();
         return;
     }
     if (!m_station->isRunning()) { // it starts once the station's drives are safe
-        showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"),
+        showVerdict(VerdictLook::State::Testing,
                     tr("Unit %1: making the station's drives safe first…").arg(serial));
         m_serial->clear();
         m_cancel->setEnabled(true);
@@ -364,7 +367,7 @@ void ProductionView::unitStarted(const QString& serial)
         m_drives->item(row, 0)->setData(Qt::UserRole, p.machineNumber);
     }
     const int attempt = m_station->lastDecision().attempt;
-    showVerdict(tr("TESTING"), QStringLiteral("#1f5fa8"),
+    showVerdict(VerdictLook::State::Testing,
                 attempt > 1 ? tr("Unit %1 — attempt %2").arg(serial).arg(attempt)
                             : tr("Unit %1").arg(serial));
     m_cancel->setEnabled(true);
@@ -421,7 +424,7 @@ void ProductionView::showNotRecorded()
 {
     const UnitRecord& unit = *m_station->unsavedResult();
     showVerdict(
-        tr("NOT RECORDED"), QStringLiteral("#b3261e"),
+        VerdictLook::State::NotRecorded,
         tr("Unit %1 ended %2, but its result is not in the results database: %3\n"
            "Nothing is tested until it is recorded. The station tries again by itself "
            "(next try at %4); keep the unit aside.")
@@ -454,24 +457,7 @@ void ProductionView::unsavedResultChanged(bool recorded)
 
 void ProductionView::showVerdictOf(const UnitRecord& record, const QString& reason)
 {
-    switch (record.status) {
-    case UnitStatus::Pass:
-        showVerdict(tr("PASS"), QStringLiteral("#1e7b34"),
-                    reason.isEmpty() ? tr("Unit %1").arg(record.serial) : reason);
-        break;
-    case UnitStatus::Fail:
-        showVerdict(tr("FAIL"), QStringLiteral("#b3261e"), reason);
-        break;
-    case UnitStatus::Error:
-        // The station could not test it: no verdict on the unit, and not counted as one.
-        showVerdict(
-            tr("STATION ERROR"), QStringLiteral("#8a6d00"),
-            tr("%1\nNot a verdict on the unit: fix the cause and test it again.").arg(reason));
-        break;
-    default:
-        showVerdict(tr("ABORTED"), QStringLiteral("#b35c00"), reason);
-        break;
-    }
+    showVerdict(VerdictLook::of(record.status), VerdictLook::reason(record, reason));
 }
 
 void ProductionView::refreshNotice()

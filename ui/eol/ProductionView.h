@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/eol/UnitRecord.h"
+#include "ui/eol/VerdictLook.h"
 
 #include <QElapsedTimer>
 #include <QWidget>
@@ -63,7 +64,7 @@ private:
     void chooseRecipe();
     void chooseUnitValues();
     void startUnit();
-    void showVerdict(const QString& text, const QString& colour, const QString& reason);
+    void showVerdict(VerdictLook::State state, const QString& reason);
     void unitStarted(const QString& serial);
     void phaseChanged(int machineNumber, int phase, const QString& text);
     void unitFinished(const UnitRecord& record);
