@@ -62,7 +62,11 @@ StepMetrics StepMetrics::measure(const TuningSamples& samples, double from, doub
         if (std::abs(after[k].speed - to) > band)
             last = k;
     }
-    if (last + 1 < after.size() && last < after.size() - 2)
+    // An oscillation passing through the band as the record ends is not settled: the stay
+    // must be long enough to be seen (a share of the record, and a few readings).
+    const int held = int(after.size()) - (last + 1);
+    if (held >= kSettledReadings &&
+        after.last().tMs - after[last + 1].tMs >= kSettledHoldShare * after.last().tMs)
         m.settlingMs = after[last + 1].tMs;
     const int tail = std::max(1, int(after.size()) / 4);
     double sum = 0;

@@ -10,7 +10,8 @@ namespace opentop {
 
 // What a step response shows, measured from the samples after a set point change `from` →
 // `to` at t = 0 (TuningSample::tMs): rise time 10–90 % of the step, overshoot beyond `to` in
-// percent of the step, settling time into and staying within ±2 % of the step, steady-state
+// percent of the step, settling time into and staying within ±2 % of the step (for at least
+// 15 % of the record, so a swing through the band as the record ends is not "settled"), steady-state
 // error (mean of the last quarter of the record minus `to`) and peak current.
 struct StepMetrics
 {
@@ -28,6 +29,9 @@ public:
 
     static StepMetrics measure(const TuningSamples& samples, double from, double to);
     static constexpr double kSettlingBand = 0.02;
+    // Settled only if it then stays in the band this share of the record and these readings.
+    static constexpr double kSettledHoldShare = 0.15;
+    static constexpr int kSettledReadings = 3;
 };
 
 } // namespace opentop

@@ -88,6 +88,27 @@ TEST(StepMetrics, NotSettledAndSteadyStateError)
     EXPECT_FALSE(StepMetrics::measure({}, 0, 500).valid);
 }
 
+TEST(StepMetrics, ASwingThroughTheBandAsTheRecordEndsIsNotSettled)
+{
+    // ±15 % around 500 with a 400 ms period, read every 50 ms (a loaded bus) and then twice
+    // within 2 ms as the record ends, both inside ±2 %: the swing is passing, not settled.
+    TuningSamples s;
+    const auto y = [](double t) { return 500 + 75 * std::sin(2 * M_PI * t / 400); };
+    for (int t = 0; t <= 1150; t += 50)
+        s.append({double(t), 500, y(t), 0, 0});
+    s.append({1199.0, 500, 503.0, 0, 0});
+    s.append({1200.5, 500, 501.0, 0, 0});
+    const StepMetrics m = StepMetrics::measure(s, 0, 500);
+    ASSERT_TRUE(m.valid);
+    EXPECT_FALSE(m.settlingMs) << "settled at " << *m.settlingMs << " ms";
+    // The same readings continuing in the band for a fifth of the record: settled.
+    for (int t = 1250; t <= 1500; t += 50)
+        s.append({double(t), 500, 500.5, 0, 0});
+    const StepMetrics later = StepMetrics::measure(s, 0, 500);
+    ASSERT_TRUE(later.settlingMs);
+    EXPECT_DOUBLE_EQ(*later.settlingMs, 1199.0);
+}
+
 TEST(RelayAnalysis, UltimateGainAndPeriodOfASteadyOscillation)
 {
     TuningSamples s;
