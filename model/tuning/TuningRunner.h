@@ -10,6 +10,7 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QStringList>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -18,6 +19,9 @@ namespace opentop {
 
 class DeviceSession;
 struct ParamValue;
+class RelayAutotune;
+class StepTest;
+class TuningDrive;
 
 // Speed-loop tests on a drive that has a TuningSpec, over its DeviceSession: a step test (from
 // speed A to B in the present closed-loop mode, recorded as fast as the line allows) and the
@@ -26,7 +30,8 @@ struct ParamValue;
 // (beyond them it stops the motor at once), runs with the communication-loss braking time set,
 // and ends by stopping the motor, confirming the stop, and restoring the speed mode and the
 // communication-loss time it found. Gains are written only by writeGains() and stored only by
-// storeGains().
+// storeGains(). The facade of the tests: the step test is StepTest, the autotune RelayAutotune,
+// what both do on the drive (and their common first and last states) TuningDrive.
 class TuningRunner : public QObject
 {
     Q_OBJECT
@@ -93,17 +98,19 @@ public:
     const TuningSpec& spec() const { return m_spec; }
     DeviceSession* session() const { return m_session; }
 
-    void setLimits(const Limits& limits) { m_limits = limits; }
-    const Limits& limits() const { return m_limits; }
+    void setLimits(const Limits& limits);
+    const Limits& limits() const;
     // The time samples are stamped with, in ms (tests on a simulated clock); a steady clock
     // by default.
-    void setClock(std::function<double()> nowMs) { m_clock = std::move(nowMs); }
+    void setClock(std::function<double()> nowMs);
 
     // Only one test at a time; `done` runs once, never before the call returns.
     void startStep(const StepPlan& plan, Done done);
     void startAutotune(const RelayPlan& plan, Done done);
     void cancel();
-    bool isRunning() const { return bool(m_done); }
+    bool isRunning() const;
+    // The named states the present or last test went through, in order (tests, the log).
+    const QStringList& stateTrail() const;
 
     void readGains(GainsDone done);
     // Writes the gains (temporary in the drive until stored) and reads them back.
@@ -115,31 +122,14 @@ signals:
     void phase(const QString& text);
 
 private:
-    struct Context;
-    void begin(Done done, std::function<void()> body);
-    void poll(std::function<void(const TuningSample&)> then);
-    void command(double engineering, std::function<void()> then);
-    void setMode(int mode, std::function<void()> then);
-    void fail(const QString& error, bool aborted = true);
-    void finish();
-    void waitStopped(double untilMs, std::function<void(bool stopped)> then);
-    void stepApproach(const StepPlan& plan);
-    void stepRecord(const StepPlan& plan);
-    void relayEstimate(const RelayPlan& plan, int stage, double u1, double y1);
-    void relayRun(const RelayPlan& plan, double u0, bool high);
-    void relayConclude(const RelayPlan& plan, double d);
-    double feedbackScale() const;
-    double nowMs() const;
-    double modeOf() const;
-    void writeNumber(const QString& parameter, double value, std::function<void(bool)> then);
     void writeGainsFrom(const PidGains& gains, int k, GainsDone done);
 
     DeviceSession* m_session;
     TuningSpec m_spec;
-    Limits m_limits;
-    Done m_done;
-    std::shared_ptr<Context> m_ctx;
-    std::function<double()> m_clock;
+    // Destroyed in reverse: the tests before the drive, whose end stops a motor mid-test.
+    std::unique_ptr<TuningDrive> m_drive;
+    std::unique_ptr<StepTest> m_step;
+    std::unique_ptr<RelayAutotune> m_relay;
 };
 
 } // namespace opentop

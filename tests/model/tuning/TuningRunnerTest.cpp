@@ -287,3 +287,72 @@ TEST_F(TuningRunnerTest, ALostPortEndsTheTestAndTheDriveBrakesByItself)
     // No frame reaches the drive any more: it brakes on its own within the 0.5 s.
     EXPECT_TRUE(waitUntil([&] { return raw("status.commutation") == 0; }, 5000));
 }
+
+// The states a test goes through, by name: a step from 0 (straight from the approach to the
+// record), with the communication-loss time set and restored.
+TEST_F(TuningRunnerTest, AStepTestGoesThroughItsNamedStatesInOrder)
+{
+    const TuningRunner::Result r = step(0, 300, 400);
+    ASSERT_TRUE(r.ok) << qPrintable(r.error);
+    EXPECT_EQ(runner->stateTrail().join(QStringLiteral(", ")).toStdString(),
+              "prepare, set comm-loss, approach, record, stop motor, restore comm-loss, reported");
+    EXPECT_FALSE(runner->isRunning());
+}
+
+TEST_F(TuningRunnerTest, AnAutotuneGoesThroughItsNamedStatesInOrder)
+{
+    ASSERT_TRUE(setGains(pid(10, 0.1))); // as in the test above that autotunes
+    TuningRunner::RelayPlan relay;
+    relay.speed = 400;
+    relay.amplitude = 10;
+    relay.rule = TuningRules::Rule::Medium;
+    const TuningRunner::Result r =
+        await<TuningRunner::Result>([&](auto done) { runner->startAutotune(relay, done); }, 30000);
+    ASSERT_TRUE(r.ok) << qPrintable(r.error);
+    QStringList trail = runner->stateTrail();
+    // A second hold only when the first guess of the output was off by more than 1 %.
+    const int holds = int(trail.count(QStringLiteral("estimate")));
+    EXPECT_TRUE(holds == 1 || holds == 2) << holds << " holds";
+    trail.removeDuplicates();
+    EXPECT_EQ(trail.join(QStringLiteral(", ")).toStdString(),
+              "prepare, set comm-loss, open loop, estimate, relay, conclude, stop motor, "
+              "restore mode, restore comm-loss, reported");
+}
+
+// Cancelled while the relay switches (not only during a step): the motor is stopped and the
+// stop confirmed, the closed-loop mode and the communication-loss time are back.
+TEST_F(TuningRunnerTest, CancelDuringTheRelayStopsTheMotorAndRestoresModeAndCommLoss)
+{
+    const double lossBefore = raw("config.comm_loss_time");
+    QObject::connect(runner.get(), &TuningRunner::phase, runner.get(), [this](const QString& p) {
+        if (p.startsWith(QStringLiteral("Relay test")))
+            runner->cancel();
+    });
+    TuningRunner::RelayPlan relay;
+    relay.speed = 400;
+    relay.amplitude = 10;
+    const TuningRunner::Result r =
+        await<TuningRunner::Result>([&](auto done) { runner->startAutotune(relay, done); }, 30000);
+    EXPECT_FALSE(r.ok);
+    EXPECT_TRUE(r.aborted);
+    EXPECT_EQ(r.error, QStringLiteral("cancelled"));
+    EXPECT_TRUE(r.stopConfirmed) << qPrintable(r.stopDetail);
+    const QStringList trail = runner->stateTrail();
+    const int relayAt = int(trail.indexOf(QStringLiteral("relay")));
+    ASSERT_GE(relayAt, 0) << qPrintable(trail.join(QStringLiteral(", ")));
+    EXPECT_EQ(trail.mid(relayAt).join(QStringLiteral(", ")).toStdString(),
+              "relay, stop motor, restore mode, restore comm-loss, reported");
+    EXPECT_TRUE(waitUntil([&] { return raw("status.commutation") == 0; }, 5000));
+    EXPECT_EQ(raw("config.speed_mode"), 2);
+    EXPECT_EQ(raw("config.comm_loss_time"), lossBefore);
+}
+
+// Refused before anything was sent: no stop to wait for, straight to the report.
+TEST_F(TuningRunnerTest, ARefusalBeforeAnythingMovesSkipsTheStop)
+{
+    control(7, {QStringLiteral("set"), QStringLiteral("0x0080"), QStringLiteral("0")});
+    const TuningRunner::Result r = step(0, 300);
+    EXPECT_FALSE(r.ok);
+    EXPECT_TRUE(r.stopDetail.isEmpty()) << qPrintable(r.stopDetail);
+    EXPECT_EQ(runner->stateTrail().join(QStringLiteral(", ")).toStdString(), "prepare, reported");
+}
