@@ -3,6 +3,7 @@
 #include "model/profile/ValueCodec.h"
 #include "model/profile/WriteOrder.h"
 #include "model/session/DeviceSession.h"
+#include "model/session/SettingCheck.h"
 
 #include <algorithm>
 
@@ -95,15 +96,17 @@ QString DeviceParameters::setPending(const QString& name, const QString& text)
         return tr("%1 is a command, not a setting; commands are sent one by one on request")
             .arg(it->meta->label);
     // Validate against what the drive will hold once the other pending edits are written.
-    ValueContext context = m_session->context();
-    const auto base = context.parameterRaw;
-    context.parameterRaw = [this, base](const QString& other) -> std::optional<qint64> {
-        const auto e = m_entries.constFind(other);
-        if (e != m_entries.cend() && e->state == State::Pending && !e->pendingRegisters.isEmpty())
-            return qint64(ValueCodec::registersToRaw(*e->meta, e->pendingRegisters));
-        return base(other);
-    };
-    const ValueCodec::Encoded encoded = ValueCodec::encodeText(*it->meta, text, context);
+    const ValueContext context = SettingCheck::overlay(
+        m_session->context(), [this](const QString& other) -> std::optional<qint64> {
+            const auto e = m_entries.constFind(other);
+            if (e != m_entries.cend() && e->state == State::Pending &&
+                !e->pendingRegisters.isEmpty())
+                return qint64(ValueCodec::registersToRaw(*e->meta, e->pendingRegisters));
+            return std::nullopt;
+        });
+    // The serial lock and the dependent settings are asked about and checked when written.
+    const SettingCheck encoded =
+        SettingCheck::of(profile(), *it->meta, text, context, pendingNames());
     if (!encoded.ok) {
         // Kept as typed, so the field shows it, Revert undoes it and no write goes around it.
         it->pendingText = text.trimmed();

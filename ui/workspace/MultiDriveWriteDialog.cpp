@@ -5,7 +5,7 @@
 #include "model/profile/RunningData.h"
 #include "model/profile/ValueCodec.h"
 #include "model/session/DeviceSession.h"
-#include "model/session/SerialLock.h"
+#include "model/session/SettingCheck.h"
 #include "ui/bus/VariantQuestion.h"
 #include "ui/groups/GroupWriteCheck.h"
 #include "ui/widgets/ConfirmBox.h"
@@ -228,8 +228,9 @@ void MultiDriveWriteDialog::check()
     for (int slave : m_writable) {
         if (!m_problem.isEmpty() || text.isEmpty())
             break;
-        const ValueCodec::Encoded e =
-            ValueCodec::encodeText(*meta(slave), text, m_drives->session(slave)->context());
+        const DeviceSession* session = m_drives->session(slave);
+        const SettingCheck e =
+            SettingCheck::of(session->profile(), *meta(slave), text, session->context(), {});
         if (!e.ok)
             m_problem = tr("Not allowed on drive %1 (%2): %3")
                             .arg(m_drives->listed(slave))
@@ -250,13 +251,12 @@ void MultiDriveWriteDialog::check()
         if (!m_problem.isEmpty() || text.isEmpty())
             break;
         const ValueContext context = m_drives->session(slave)->context();
-        const ValueCodec::Encoded e = ValueCodec::encodeText(*meta(slave), text, context);
         const Profile& profile = m_drives->session(slave)->profile();
+        const SettingCheck e = SettingCheck::of(profile, *meta(slave), text, context, {});
         // Outside the recommended range, a short deceleration, the serial lock: each said.
         for (const QString& w :
-             {e.warning,
-              RunningData::warningFor(profile, meta(slave)->name, qint64(e.raw), context),
-              lockWarning(slave, text)})
+             {e.warning, RunningData::warningFor(profile, meta(slave)->name, e.raw, context),
+              e.lock})
             if (!w.isEmpty())
                 advice << tr("Drive %1: %2").arg(m_drives->listed(slave)).arg(w);
     }
@@ -327,11 +327,8 @@ void MultiDriveWriteDialog::writeToAll()
 
 QString MultiDriveWriteDialog::lockWarning(int slave, const QString& text) const
 {
-    const ValueContext context = m_drives->session(slave)->context();
-    const ValueCodec::Encoded e = ValueCodec::encodeText(*meta(slave), text, context);
-    return e.ok ? SerialLock::warning(m_drives->session(slave)->profile(), *meta(slave),
-                                      qint64(e.raw), context)
-                : QString();
+    const DeviceSession* session = m_drives->session(slave);
+    return SettingCheck::of(session->profile(), *meta(slave), text, session->context(), {}).lock;
 }
 
 void MultiDriveWriteDialog::writeConfirmed(const QString& text)
