@@ -3,6 +3,7 @@
 #include "cli/CliContext.h"
 #include "cli/CliIdentity.h"
 #include "cli/EolRunIdentity.h"
+#include "cli/EolRunOutput.h"
 #include "cli/EolSupport.h"
 #include "cli/ExitCode.h"
 #include "model/eol/EolRun.h"
@@ -14,15 +15,13 @@
 #include "model/eol/StationSafeState.h"
 #include "model/eol/UnitValuesCsv.h"
 #include "model/profile/ProfileRegistry.h"
+#include "model/station/UnitStartGate.h"
 #include "transport/ModbusClient.h"
 
-#include <QDateTime>
 #include <QDir>
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QHostInfo>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QTimer>
 #include <memory>
 #include <pwd.h>
@@ -44,41 +43,6 @@ const QString kDb = QStringLiteral("db");
 const QString kUnits = QStringLiteral("units");
 const QString kValue = QStringLiteral("value");
 const QString kRetest = QStringLiteral("retest");
-
-QString phaseKey(EolDriveRun::Phase phase)
-{
-    switch (phase) {
-    case EolDriveRun::Phase::Identify:
-        return QStringLiteral("identify");
-    case EolDriveRun::Phase::Write:
-        return QStringLiteral("write");
-    case EolDriveRun::Phase::Verify:
-        return QStringLiteral("verify");
-    case EolDriveRun::Phase::Test:
-        return QStringLiteral("test");
-    case EolDriveRun::Phase::Done:
-        break;
-    }
-    return QStringLiteral("done");
-}
-
-QString limitsText(const Measurement& m)
-{
-    const auto n = [](double v) { return QString::number(v, 'g', 6); };
-    if (m.lower && m.upper)
-        return QStringLiteral("%1–%2").arg(n(*m.lower), n(*m.upper));
-    if (m.upper)
-        return QStringLiteral("≤ %1").arg(n(*m.upper));
-    if (m.lower)
-        return QStringLiteral("≥ %1").arg(n(*m.lower));
-    return QString();
-}
-
-void jsonLine(CliContext& context, QJsonObject object)
-{
-    context.out() << QJsonDocument(object).toJson(QJsonDocument::Compact) << '\n';
-    context.out().flush();
-}
 
 } // namespace
 
@@ -261,57 +225,15 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     if (!identity)
         return code;
 
-    // The recipe's retest rules, on the serial's recorded verdicts, before anything is sent.
-    RetestPolicy::Decision decision;
-    {
-        QEventLoop loop;
-        RetestPolicy::check(&writer, recipe->retest, serial, checksum, &loop,
-                            [&](const RetestPolicy::Decision& d) {
-                                decision = d;
-                                loop.quit();
-                            });
-        loop.exec();
-    }
-    if (decision.kind == RetestPolicy::Decision::Kind::Refused ||
-        (decision.kind == RetestPolicy::Decision::Kind::NeedsTechnician &&
-         !parser.isSet(kRetest))) {
-        err << tr("error: %1; nothing was sent").arg(decision.reason) << Qt::endl;
-        if (decision.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
-            err << tr("a technician allows it with --retest") << Qt::endl;
-        return ExitInvalid;
-    }
-    if (decision.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
-        err << tr("note: %1; tested again as --retest allows").arg(decision.reason) << Qt::endl;
-    else if (!decision.reason.isEmpty())
-        err << tr("note: %1").arg(decision.reason) << Qt::endl;
-
-    if (!context.connectBus())
-        return context.usageError() ? ExitUsage : ExitCommunication;
-
-    // A station killed mid-test may have left a motor turning in communication priority: the
-    // recipe's positions are made safe first, and what was found is said.
-    {
-        StationSafeState safe(context.client(), ProfileRegistry::builtIn(), *recipe);
-        QVector<PositionSafety> found;
-        QEventLoop loop;
-        safe.run([&](const QVector<PositionSafety>& f) {
-            found = f;
-            loop.quit();
-        });
-        loop.exec();
-        for (const PositionSafety& p : found) {
-            if (p.worthSaying())
-                err << tr("station: %1").arg(p.summary()) << Qt::endl;
-        }
-        // The operator screen's rule (PositionSafety::blocksUnits).
-        if (!PositionSafety::blockingText(found).isEmpty()) {
-            err << tr("a drive of the station is not confirmed stopped; nothing was tested")
-                << Qt::endl;
-            return ExitMismatch;
-        }
-    }
-
-    EolRun::Options options;
+    // The operator screen's gate: the recipe's retest rules on the serial's recorded verdicts
+    // before anything is sent (a technician allows a held retest with --retest), then the bus
+    // and the recipe's positions made safe (a station killed mid-test may have left a motor
+    // turning in communication priority), then the unit begun. This only says what it decides.
+    UnitStartGate gate(ProfileRegistry::builtIn());
+    UnitStartGate::Unit unit;
+    unit.recipe = *recipe;
+    unit.technicianAllows = parser.isSet(kRetest);
+    EolRun::Options& options = unit.options;
     options.serial = serial;
     options.station = station;
     options.operatorName = identity->user.isEmpty() ? parser.value(kOperator) : identity->user;
@@ -326,121 +248,79 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     options.assertedVariants = *asserted;
     options.writer = &writer;
     options.traffic = context.trafficLog();
-    EolRun eol(context.client(), ProfileRegistry::builtIn(), *recipe, options);
-
-    const bool json = context.json();
-    QTextStream& out = context.out();
-    const auto seconds = [&eol] { return QString::number(eol.elapsedMs() / 1000.0, 'f', 1); };
-    QObject::connect(&eol, &EolRun::phaseChanged, &eol,
-                     [&](int machineNumber, EolDriveRun::Phase phase, const QString& text) {
-                         if (json) {
-                             jsonLine(context,
-                                      {{QStringLiteral("event"), QStringLiteral("phase")},
-                                       {QStringLiteral("machineNumber"), machineNumber},
-                                       {QStringLiteral("phase"), phaseKey(phase)},
-                                       {QStringLiteral("text"), text},
-                                       {QStringLiteral("seconds"), eol.elapsedMs() / 1000.0}});
-                             return;
-                         }
-                         // Progress on standard error: standard output is the unit's
-                         // measurements and verdict, for scripts.
-                         err << QStringLiteral("[%1 s] %2: %3\n")
-                                    .arg(seconds(), tr("drive %1").arg(machineNumber), text);
-                         err.flush();
-                     });
-    QObject::connect(&eol, &EolRun::measured, &eol, [&](const Measurement& m) {
-        if (json) {
-            QJsonObject o{{QStringLiteral("event"), QStringLiteral("measurement")},
-                          {QStringLiteral("machineNumber"), m.machineNumber},
-                          {QStringLiteral("step"), m.step},
-                          {QStringLiteral("quantity"), m.quantity},
-                          {QStringLiteral("value"), m.value},
-                          {QStringLiteral("unit"), m.unit},
-                          {QStringLiteral("pass"), m.pass}};
-            if (m.lower)
-                o.insert(QStringLiteral("lower"), *m.lower);
-            if (m.upper)
-                o.insert(QStringLiteral("upper"), *m.upper);
-            jsonLine(context, o);
+    std::optional<bool> connected;
+    unit.client = [&]() -> ModbusClient* {
+        if (!connected)
+            connected = context.connectBus();
+        return *connected ? context.client() : nullptr;
+    };
+    unit.retestPassed = [&](const RetestPolicy::Decision& d) {
+        if (d.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
+            err << tr("note: %1; tested again as --retest allows").arg(d.reason) << Qt::endl;
+        else if (!d.reason.isEmpty())
+            err << tr("note: %1").arg(d.reason) << Qt::endl;
+    };
+    QObject::connect(&gate, &UnitStartGate::safetyChanged, &gate, [&] {
+        if (gate.isMakingSafe())
             return;
+        for (const PositionSafety& p : gate.safety()) {
+            if (p.worthSaying())
+                err << tr("station: %1").arg(p.summary()) << Qt::endl;
         }
-        const QString limits = limitsText(m);
-        out << QStringLiteral("[%1 s] %2: %3 = %4 %5\n")
-                   .arg(seconds(), tr("drive %1").arg(m.machineNumber), m.quantity,
-                        QStringLiteral("%1 %2")
-                            .arg(QString::number(m.value, 'g', 6), m.unit)
-                            .trimmed(),
-                        (limits.isEmpty() ? QString() : QStringLiteral("(%1) ").arg(limits)) +
-                            (m.pass ? tr("ok") : tr("FAIL")));
-        out.flush();
     });
-    QObject::connect(context.client(), &ModbusClient::connectionLost, &eol,
-                     [&eol](const QString& why) { eol.connectionLost(why); });
-    bool lost = false;
-    QObject::connect(context.client(), &ModbusClient::connectionLost, &eol,
-                     [&lost](const QString&) { lost = true; });
 
+    std::unique_ptr<EolRun> eol;
+    bool lost = false;
     UnitRecord record;
-    bool finished = false;
     QEventLoop loop;
     QTimer interrupt;
     bool interrupted = false;
-    // Ctrl-C (or SIGTERM from a line controller) cancels: motors stopped, recorded as aborted.
-    QObject::connect(&interrupt, &QTimer::timeout, &loop, [&] {
-        if (context.interrupted() && !interrupted) {
-            interrupted = true;
-            eol.cancel(tr("interrupted at the station"));
-        }
-    });
-    interrupt.start(50);
-    eol.start([&](const UnitRecord& r) {
+    unit.made = [&](EolRun* run, ModbusClient* client) {
+        eol.reset(run);
+        EolRunOutput::follow(context, run, client, &lost);
+        // Ctrl-C (or SIGTERM from a line controller) cancels: motors stopped, recorded as
+        // aborted.
+        QObject::connect(&interrupt, &QTimer::timeout, &loop, [&] {
+            if (context.interrupted() && !interrupted) {
+                interrupted = true;
+                eol->cancel(tr("interrupted at the station"));
+            }
+        });
+        interrupt.start(50);
+    };
+    unit.finished = [&](const UnitRecord& r) {
         record = r;
-        finished = true;
         loop.quit();
+    };
+    UnitStartGate::Outcome outcome;
+    gate.start(unit, [&](const UnitStartGate::Outcome& o) {
+        outcome = o;
+        if (o.kind != UnitStartGate::Outcome::Kind::Begun)
+            loop.quit();
     });
-    if (!finished)
-        loop.exec();
-
-    const QString verdict = unitStatusName(record.status).toUpper();
-    if (json) {
-        QJsonObject o{{QStringLiteral("event"), QStringLiteral("result")},
-                      {QStringLiteral("serial"), record.serial},
-                      {QStringLiteral("status"), unitStatusName(record.status)},
-                      {QStringLiteral("id"), record.id},
-                      {QStringLiteral("seconds"), eol.elapsedMs() / 1000.0},
-                      {QStringLiteral("recorded"), eol.storeError().isEmpty()},
-                      {QStringLiteral("spooled"), eol.spooled()},
-                      {QStringLiteral("attempt"), record.attempt}};
-        if (!record.failureReason.isEmpty())
-            o.insert(QStringLiteral("reason"), record.failureReason);
-        if (!eol.unconfirmedStops().isEmpty())
-            o.insert(QStringLiteral("notConfirmedStopped"),
-                     QJsonValue::fromVariant(eol.unconfirmedStops()));
-        jsonLine(context, o);
-    } else {
-        out << QStringLiteral("%1  %2  %3 %4  %5 s%6\n")
-                   .arg(record.serial, verdict, recipe->product,
-                        tr("rev. %1").arg(recipe->revision), seconds(),
-                        record.attempt > 1
-                            ? QStringLiteral("  ") + tr("attempt %1").arg(record.attempt)
-                            : QString());
-        if (!record.failureReason.isEmpty())
-            out << record.failureReason << '\n';
-        out.flush();
-    }
-    if (!eol.storeError().isEmpty())
-        err << tr("the result was NOT recorded: %1").arg(eol.storeError()) << Qt::endl;
-    else if (eol.spooled())
-        err << tr("the results database did not answer: the result is kept on this station "
-                  "(%1) and sent when a station program next reaches the database")
-                   .arg(QDir::toNativeSeparators(writer.spoolPath()))
+    loop.exec();
+    switch (outcome.kind) {
+    case UnitStartGate::Outcome::Kind::RetestRefused:
+    case UnitStartGate::Outcome::Kind::NeedsTechnician:
+        err << tr("error: %1; nothing was sent").arg(outcome.message) << Qt::endl;
+        if (outcome.kind == UnitStartGate::Outcome::Kind::NeedsTechnician)
+            err << tr("a technician allows it with --retest") << Qt::endl;
+        return ExitInvalid;
+    case UnitStartGate::Outcome::Kind::NotConnected:
+    case UnitStartGate::Outcome::Kind::Cancelled: // never here: nothing cancels it
+        return context.usageError() ? ExitUsage : ExitCommunication;
+    case UnitStartGate::Outcome::Kind::Unsafe: // the operator screen's rule
+        err << tr("a drive of the station is not confirmed stopped; nothing was tested")
             << Qt::endl;
-    for (const QString& drive : eol.unconfirmedStops())
-        err << tr("WARNING: motor not confirmed stopped: %1").arg(drive) << Qt::endl;
-
-    if (!eol.unconfirmedStops().isEmpty())
         return ExitMismatch;
-    if (!eol.storeError().isEmpty())
+    case UnitStartGate::Outcome::Kind::Begun:
+        break;
+    }
+
+    EolRunOutput::verdict(context, *eol, record, *recipe, writer.spoolPath());
+    if (!eol->unconfirmedStops().isEmpty())
+        return ExitMismatch;
+    if (!eol->storeError().isEmpty())
         return ExitCommunication;
     switch (record.status) {
     case UnitStatus::Pass:

@@ -1,14 +1,13 @@
 #include "model/eol/EolDriveRun.h"
 
 #include "model/eol/CommLossArm.h"
+#include "model/eol/EolSettingsWriter.h"
 #include "model/eol/EolTarget.h"
 #include "model/eol/Recipe.h"
 #include "model/eol/VariantCheck.h"
-#include "model/files/RestorePlan.h"
-#include "model/files/Restorer.h"
+#include "model/files/BackupDevice.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/profile/RoleEvaluator.h"
-#include "model/profile/ValueCodec.h"
 #include "model/session/DeviceIdentifier.h"
 #include "model/session/DeviceInfo.h"
 #include "model/session/DeviceSession.h"
@@ -34,7 +33,11 @@ EolDriveRun::EolDriveRun(ModbusClient* client, const ProfileRegistry& registry, 
     m_drive.machineNumber = position.machineNumber;
 }
 
-EolDriveRun::~EolDriveRun() = default;
+EolDriveRun::~EolDriveRun()
+{
+    // Before the session (an older child): a runner deleted mid-motion sends its stop through it.
+    delete m_steps;
+}
 
 QString EolDriveRun::title() const
 {
@@ -57,6 +60,12 @@ void EolDriveRun::start(std::function<void()> done)
         if (!m_ended)
             identified(info);
     });
+}
+
+const QVector<WrittenValue>& EolDriveRun::writtenValues() const
+{
+    static const QVector<WrittenValue> none; // nothing is written before the variant is known
+    return m_settings ? m_settings->values() : none;
 }
 
 void EolDriveRun::setVariantEvidence(const QString& asserted, const QString& operatorName)
@@ -139,10 +148,11 @@ void EolDriveRun::variantKnown(const VariantDecision::Decision& decision)
         fail(error);
         return;
     }
-    m_target = *target;
-    m_target.model = m_drive.model;
-    m_target.firmware = m_drive.firmware;
+    BackupDevice settings = *target;
+    settings.model = m_drive.model;
+    settings.firmware = m_drive.firmware;
     m_session->setVariant(decision.variant);
+    m_settings = new EolSettingsWriter(m_session, settings, m_position.machineNumber, this);
     write();
 }
 
@@ -207,92 +217,29 @@ void EolDriveRun::checkStopped()
 void EolDriveRun::write()
 {
     setPhase(Phase::Write, tr("writing the settings"));
-    m_restorer = new Restorer(m_session, this);
-    m_restorer->start(m_target, {}, [this](const RestorePlan& plan) {
-        m_restorer->deleteLater();
-        m_restorer = nullptr;
-        if (!m_ended)
-            written(plan);
-    });
-}
-
-void EolDriveRun::written(const RestorePlan& plan)
-{
-    const Profile& profile = m_session->profile();
-    const ValueContext context = m_session->context();
-    for (const RestorePlan::Item& item : plan.items) {
-        if (item.action == RestorePlan::Item::Action::Store)
-            continue;
-        const ParameterMeta* meta = profile.parameter(item.parameter);
-        WrittenValue w;
-        w.machineNumber = m_position.machineNumber;
-        w.parameter = item.parameter;
-        // A result record holds the profile's English (canonicalLabel, formatCanonical), whatever
-        // the language of the station: records of every station are read and compared together.
-        w.label = meta ? meta->canonicalLabel : item.parameter;
-        const BackupParameter* want = m_target.parameter(item.parameter);
-        w.value = meta && want
-                      ? ValueCodec::formatCanonical(
-                            *meta, ValueCodec::decode(*meta, want->registers, context), context)
-                      : item.fileText;
-        w.written = item.action == RestorePlan::Item::Action::Write &&
-                    item.status != RestorePlan::Item::Status::NotAttempted;
-        w.verified = false; // proven by the read below
-        m_written.append(w);
-    }
-    if (plan.outcome != RestorePlan::Outcome::Done) {
-        QString reason = plan.reason;
-        if (reason.isEmpty())
-            reason = RestorePlan::outcomeText(plan.outcome);
-        for (const RestorePlan::Item& item : plan.items) {
-            if (item.status == RestorePlan::Item::Status::Failed ||
-                item.status == RestorePlan::Item::Status::NotConfirmed) {
-                const ParameterMeta* meta = profile.parameter(item.parameter);
-                reason = tr("%1: %2").arg(meta ? meta->label : item.parameter, item.error);
-                break;
-            }
+    m_settings->write([this](const QString& failure) {
+        if (m_ended)
+            return;
+        if (!failure.isEmpty()) {
+            fail(tr("writing the settings: %1").arg(failure));
+            return;
         }
-        if (!plan.problems.isEmpty())
-            reason += QStringLiteral(" (") + plan.problems.join(QStringLiteral("; ")) +
-                      QStringLiteral(")");
-        fail(tr("writing the settings: %1").arg(reason));
-        return;
-    }
-    verify();
+        verify();
+    });
 }
 
 void EolDriveRun::verify()
 {
     setPhase(Phase::Verify, tr("reading every setting back"));
-    m_session->readMany(
-        m_target.parameterNames(), [this](const DeviceSession::ReadManyOutcome& many) {
-            if (m_ended)
-                return;
-            const Profile& profile = m_session->profile();
-            const ValueContext context = m_session->context();
-            QString firstFailure;
-            for (WrittenValue& w : m_written) {
-                const DeviceSession::Outcome r = many.results.value(w.parameter);
-                const BackupParameter* want = m_target.parameter(w.parameter);
-                const ParameterMeta* meta = profile.parameter(w.parameter);
-                if (!r.ok || !want || !meta) {
-                    w.readBack = QString();
-                    if (firstFailure.isEmpty())
-                        firstFailure = tr("%1 cannot be read back: %2").arg(w.label, r.error);
-                    continue;
-                }
-                w.readBack = ValueCodec::formatCanonical(*meta, r.value, context);
-                w.verified = r.value.registers == want->registers;
-                if (!w.verified && firstFailure.isEmpty())
-                    firstFailure = tr("%1 does not keep its value: set to %2, reads %3")
-                                       .arg(w.label, w.value, w.readBack);
-            }
-            if (!firstFailure.isEmpty()) {
-                fail(tr("verifying the settings: %1").arg(firstFailure));
-                return;
-            }
-            test();
-        });
+    m_settings->verify([this](const QString& failure) {
+        if (m_ended)
+            return;
+        if (!failure.isEmpty()) {
+            fail(tr("verifying the settings: %1").arg(failure));
+            return;
+        }
+        test();
+    });
 }
 
 void EolDriveRun::test()
@@ -351,9 +298,9 @@ void EolDriveRun::abort(const QString& reason)
         m_steps->abort(reason); // stops the motor; its result ends this run
         return;
     }
-    if (m_restorer) {
+    if (m_settings && m_settings->isWriting()) {
         // A write and its read-back belong together: the restorer stops after it.
-        m_restorer->cancel();
+        m_settings->cancel();
         if (m_failure.isEmpty())
             m_failure = reason;
         return;
@@ -383,6 +330,8 @@ void EolDriveRun::finish()
     if (m_ended)
         return;
     m_ended = true;
+    if (m_settings)
+        m_settings->drop(); // its answers from now on are dropped, as this run's are
     setPhase(Phase::Done, m_ok ? tr("passed") : m_failure);
     if (m_done) {
         auto done = std::move(m_done);

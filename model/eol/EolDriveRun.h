@@ -4,7 +4,6 @@
 #include "model/eol/RecipeTypes.h"
 #include "model/eol/UnitRecord.h"
 #include "model/eol/VariantDecision.h"
-#include "model/files/BackupDevice.h"
 
 #include <QHash>
 #include <QObject>
@@ -16,17 +15,15 @@ namespace opentop {
 class CommLossArm;
 class DeviceSession;
 struct DeviceInfo;
+class EolSettingsWriter;
 class ModbusClient;
 class ProfileRegistry;
-class Restorer;
 class RunControl;
-struct RestorePlan;
 
 // One drive of a unit through the end-of-line run: identify it, check that it is an allowed
-// model, variant and firmware, write only the recipe's settings that differ (Restorer: in
-// dependency order, each read back, the DC controller's stored), read every setting of the
-// recipe back once more, then run its steps (EolStepRunner). The first failure ends it; a
-// drive whose motor may be turning is stopped first.
+// model, variant and firmware, write only the recipe's settings that differ and read every one
+// back once more (EolSettingsWriter), then run its steps (EolStepRunner). The first failure
+// ends it; a drive whose motor may be turning is stopped first.
 class EolDriveRun : public QObject
 {
     Q_OBJECT
@@ -70,7 +67,7 @@ public:
     bool stopConfirmed() const { return m_stopConfirmed; }
     QString stopDetail() const { return m_stopDetail; }
     const UnitDrive& drive() const { return m_drive; }
-    const QVector<WrittenValue>& writtenValues() const { return m_written; }
+    const QVector<WrittenValue>& writtenValues() const;
     const QVector<Measurement>& measurements() const { return m_measurements; }
 
 signals:
@@ -85,7 +82,6 @@ private:
     void variantKnown(const VariantDecision::Decision& decision);
     void failIdentity(const QString& reason);
     void write();
-    void written(const RestorePlan& plan);
     void verify();
     void test();
     void runSteps();
@@ -115,12 +111,10 @@ private:
     bool m_stopConfirmed = true;
     QString m_stopDetail;
     UnitDrive m_drive;
-    BackupDevice m_target;
-    QVector<WrittenValue> m_written;
     QVector<Measurement> m_measurements;
     DeviceSession* m_session = nullptr;
     std::unique_ptr<CommLossArm> m_commLoss;
-    Restorer* m_restorer = nullptr;
+    EolSettingsWriter* m_settings = nullptr; // once the variant is known
     EolStepRunner* m_steps = nullptr;
 };
 

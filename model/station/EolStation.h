@@ -3,31 +3,30 @@
 #include "model/eol/EolRun.h"
 #include "model/eol/Recipe.h"
 #include "model/eol/RetestPolicy.h"
-#include "model/eol/StationAlarmReset.h"
 #include "model/eol/StationLease.h"
 #include "model/eol/StationSafeState.h"
 #include "model/eol/UnitRecord.h"
+#include "model/station/LatchedAlarms.h"
 #include "model/station/StationRecipe.h"
+#include "model/station/StationResults.h"
+#include "model/station/UnitStartGate.h"
 
 #include <QCoreApplication>
 #include <QObject>
 #include <QPointer>
-#include <QTimer>
-#include <functional>
 #include <memory>
 #include <optional>
 
 namespace opentop {
 
 class ModbusClient;
-class ResultWriter;
 class StationYield;
 class StationAccess;
 class TrafficLog;
 
-// An end-of-line station as the operator screen drives it: one recipe, one results database,
-// units one after another (EolRun), this shift's counters and last units. The screen only
-// shows what this says; the command line's `eol run` is the same engine without it.
+// An end-of-line station as the operator screen drives it: one recipe, one results database
+// (StationResults), units one after another (UnitStartGate, then EolRun), this shift's counters
+// and last units. The screen only shows what this says; `eol run` shares the gate and the run.
 class EolStation : public QObject
 {
     Q_OBJECT
@@ -53,20 +52,14 @@ public:
         return m_recipe.operatorValues();
     }
 
-    // Opens the results database on its own thread (`url` empty: OPENTOP_EOL_DB, else the
-    // default file, made when missing); the station's leftovers from a crash become
-    // interrupted. databaseOpened() answers.
-    // A database that cannot be opened (a server down) is tried again by itself, 2, 4 … 30 s
-    // apart, until it opens; databaseOpened() answers each try.
+    // Opens the results database (StationResults: tried again by itself until it opens); the
+    // station's leftovers from a crash become interrupted. databaseOpened() answers each try.
     void openDatabase(const QString& url);
-    // The same, waiting for the answer in a local event loop (start-up, before the window
-    // shows); no databaseOpened().
+    // The same, waiting in a local event loop (start-up, before the window); no databaseOpened().
     bool openDatabaseAndWait(const QString& url, QString* error);
-    QString databaseText() const;
-    // Why the last try to open the database failed; empty once it is open.
-    QString databaseError() const { return m_dbError; }
-    // The URL given to openDatabase() (empty: OPENTOP_EOL_DB or the default file).
-    QString databaseUrl() const { return m_dbUrl; }
+    QString databaseText() const { return m_results->text(); }
+    QString databaseError() const { return m_results->error(); } // empty once it is open
+    QString databaseUrl() const { return m_results->url(); }     // as given to openDatabase()
     bool hasDatabase() const; // open, and whether it has users is known (access())
     bool isOpeningDatabase() const;
     // The station's name in every record (default: the host's name). A database already open is
@@ -83,11 +76,9 @@ public:
 
     // Starts a unit: false with *error (and nothing sent) when no recipe, no database, a per-unit
     // value missing or not allowed, or a unit already running. `typed`: the operator's values.
-    // When the positions were not made safe yet, that is done first and the unit starts once it
-    // is (unitStarted), or startRefused() says why it did not.
-    // First the recipe's retest rules are checked on the serial's recorded verdicts
-    // (RetestPolicy): a retest that needs a technician starts only with `retestBy` (who allowed
-    // it), else retestNeedsTechnician() says why.
+    // Then UnitStartGate: the retest rules (a retest that needs a technician only with
+    // `retestBy`, who allowed it), the positions made safe, the unit begun: unitStarted(), or
+    // startRefused() / retestNeedsTechnician() say why not.
     bool start(ModbusClient* client, TrafficLog* traffic, const QString& serial,
                const QHash<int, QHash<QString, double>>& typed, QString* error,
                const QString& retestBy = QString());
@@ -99,47 +90,47 @@ public:
     void connectionLost(const QString& error);
     bool isRunning() const { return m_run && m_run->isRunning(); }
     // A unit start() accepted that waits for the drives to be made safe.
-    bool isStarting() const { return bool(m_pendingStart); }
-    QString startingSerial() const { return m_pendingSerial; }
+    bool isStarting() const { return m_gate->isPending(); }
+    QString startingSerial() const { return m_gate->pendingSerial(); }
     EolRun* run() const { return m_run; }
     qint64 elapsedMs() const { return m_run ? m_run->elapsedMs() : 0; }
     // This station's figures for this recipe version in this shift, as the database holds them.
     StationYield* yield() const { return m_yield; }
     // The last retest decision (its attempt number) for the unit started last.
-    const RetestPolicy::Decision& lastDecision() const { return m_decision; }
-    // Machine numbers whose alarm was latched before the last unit's test: a station error
-    // that resetAlarmsAndRetry() may clear (the operator asks for it).
-    QVector<int> latchedAlarms() const { return m_latchedAlarms; }
-    bool isResettingAlarms() const { return bool(m_alarmReset); }
+    const RetestPolicy::Decision& lastDecision() const { return m_gate->decision(); }
+    // The last unit's alarms latched before its test (LatchedAlarms): the operator may reset.
+    QVector<int> latchedAlarms() const { return m_alarms->machineNumbers(); }
+    bool isResettingAlarms() const { return m_alarms->isResetting(); }
     // Resets those alarms (each drive's reset rules) and, when all are cleared, starts the same
     // serial again with the values it was given.
     void resetAlarmsAndRetry(ModbusClient* client);
     const QVector<UnitRecord>& lastUnits() const { return m_last; } // newest first
     QStringList unconfirmedStops() const { return m_unconfirmed; }
-    QString storeError() const { return m_storeError; }
-    // The last unit's verdict could not be recorded: no unit starts until it is. The station
-    // tries again by itself (1 s, 2 s, 4 s … 30 s apart) on a new connection.
-    bool hasUnsavedResult() const { return m_unsaved.has_value(); }
-    const std::optional<UnitRecord>& unsavedResult() const { return m_unsaved; }
-    int nextRetrySeconds() const;
-    void retryUnsavedNow();
-    // Puts the recipe's positions in a safe state (StationSafeState): stopped, control given back
-    // to their inputs. Done when production starts and again after a unit that did not end
-    // cleanly; start() refuses units until it has been done and found nothing unsafe.
+    QString storeError() const { return m_results->storeError(); }
+    // The last unit's verdict is not recorded yet (StationResults): no unit starts until it is.
+    bool hasUnsavedResult() const { return m_results->unsaved().has_value(); }
+    const std::optional<UnitRecord>& unsavedResult() const { return m_results->unsaved(); }
+    int nextRetrySeconds() const { return m_results->nextRetrySeconds(); }
+    void retryUnsavedNow() { m_results->retryUnsavedNow(); }
+    // Puts the recipe's positions in a safe state (UnitStartGate::makeSafe): when production
+    // starts; units wait until it was done and found nothing unsafe.
     void makeSafe(ModbusClient* client);
-    bool isMakingSafe() const { return bool(m_safeState); }
-    bool isSafe() const { return m_safe; }
-    const QVector<PositionSafety>& safety() const { return m_safety; }
-    void setStopTiming(const StopConfirmer::Timing& timing) { m_stopTiming = timing; }
+    bool isMakingSafe() const { return m_gate->isMakingSafe(); }
+    bool isSafe() const { return m_gate->isSafe(); }
+    const QVector<PositionSafety>& safety() const { return m_gate->safety(); }
+    void setStopTiming(const StopConfirmer::Timing& timing) { m_gate->setStopTiming(timing); }
     // The last verdict is kept in the station's spool, not yet in the results database.
-    bool lastResultSpooled() const { return m_lastSpooled; }
+    bool lastResultSpooled() const { return m_results->lastSpooled(); }
     // Records in the spool, waiting for the results database, and why.
-    int resultsWaiting() const;
-    QString resultsWaitingError() const;
-    void sendWaitingResultsNow();
+    int resultsWaiting() const { return m_results->waiting(); }
+    QString resultsWaitingError() const { return m_results->waitingError(); }
+    void sendWaitingResultsNow() { m_results->sendWaitingNow(); }
     // Units of this station that a process now gone left running (found when the database
     // opened): interrupted in the database, and named on the screen.
-    const QVector<StationLease::Leftover>& interruptedUnits() const { return m_interrupted; }
+    const QVector<StationLease::Leftover>& interruptedUnits() const
+    {
+        return m_results->interrupted();
+    }
 
 signals:
     void unitStarted(const QString& serial);
@@ -166,52 +157,28 @@ signals:
 
 private:
     void finished(const UnitRecord& record);
-    void scheduleRetry();
-    void count(const UnitRecord& record); // a recorded verdict: the shift's figures again
-    void refreshYield();
-    // The serial's retest rules answered: the unit goes on to be made safe, or is held back.
-    void retestChecked(const RetestPolicy::Decision& d, const QString& retestBy,
-                       ModbusClient* client);
-    void begin(ModbusClient* client, TrafficLog* traffic, const EolRun::Options& options);
-    QString unsafeText() const;
+    void refreshYield(); // the shift's figures again, as the database holds them
+    // The gate began the unit: its run is the station's, the screen follows it.
+    void begin(EolRun* run, ModbusClient* client);
 
-    StationRecipe m_recipe; // the recipe and each unit's values
-    std::unique_ptr<ResultWriter> m_writer;
+    StationRecipe m_recipe;                    // the recipe and each unit's values
+    std::unique_ptr<StationResults> m_results; // the database and verdicts not recorded yet
     StationAccess* m_access;
     QString m_station;
     QString m_operator;
     EolStepRunner::Timing m_timing;
     QPointer<EolRun> m_run;
     StationYield* m_yield;
-    RetestPolicy::Decision m_decision;
-    quint64 m_startToken = 0; // a retest check's answer for a start since cancelled is dropped
+    UnitStartGate* m_gate; // retest → safe → begin; what making safe found
     struct LastStart
     {
         QString serial;
         QHash<int, QHash<QString, double>> typed;
         TrafficLog* traffic = nullptr;
     } m_lastStart;
-    QVector<int> m_latchedAlarms;
-    QPointer<StationAlarmReset> m_alarmReset;
+    LatchedAlarms* m_alarms; // before a test, and their reset on request
     QVector<UnitRecord> m_last;
     QStringList m_unconfirmed;
-    QString m_storeError;
-    std::optional<UnitRecord> m_unsaved;
-    bool m_lastSpooled = false;
-    QVector<StationLease::Leftover> m_interrupted;
-    QPointer<StationSafeState> m_safeState;
-    QPointer<ModbusClient> m_client;
-    bool m_safe = false;
-    QVector<PositionSafety> m_safety;
-    std::function<void()> m_pendingStart;
-    QString m_pendingSerial;
-    StopConfirmer::Timing m_stopTiming;
-    QTimer m_retry;
-    int m_retryDelayS = 1;
-    QString m_dbUrl;
-    QString m_dbError;
-    QTimer m_openRetry;
-    int m_openDelayS = 2;
 };
 
 } // namespace opentop
