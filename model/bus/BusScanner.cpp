@@ -6,24 +6,15 @@
 #include "transport/ModbusClient.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace opentop {
-
-namespace {
-
-constexpr int kReadRequestBytes = 8; // id, function, address, count, CRC
-constexpr double kMarginMs = 2.0;    // scheduling on the master's side
-// A TCP gateway queues the request and forwards it on its own serial line.
-constexpr double kGatewayMs = 50.0;
-
-} // namespace
 
 BusScanner::BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent)
     : QObject(parent)
     , m_client(client)
     , m_registry(registry)
     , m_identifier(new DeviceIdentifier(client, registry, this))
+    , m_waits(client)
 {
     // A late reply can be taken by any request on the bus, not only the scan's: the program
     // polls the drives it has found meanwhile. Every result is looked at.
@@ -41,53 +32,10 @@ BusScanner::~BusScanner()
         m_held->releasePolling();
 }
 
-int BusScanner::defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs)
-{
-    const double c = settings.charTimeMs();
-    const double gap = settings.baud > 19200 ? 1.75 : 3.5 * c; // Modbus RTU's, as the drive keeps
-    double ms = kReadRequestBytes * c + gap + kAnswerBudgetMs + kMarginMs + adapterLatencyMs;
-    if (settings.kind == ConnectionSettings::Kind::Tcp)
-        ms += kGatewayMs;
-    return std::clamp(int(std::ceil(ms)), kMinWaitMs, kMaxWaitMs);
-}
-
-int BusScanner::wholeReplyWaitMs(const ConnectionSettings& settings, int firstByteWaitMs,
-                                 int replyBytes)
-{
-    const double ms = firstByteWaitMs + replyBytes * settings.charTimeMs() + kMarginMs;
-    return std::clamp(int(std::ceil(ms)), kMinWaitMs, kMaxWaitMs);
-}
-
 void BusScanner::setRange(int from, int to)
 {
     m_from = std::clamp(from, 1, 247);
     m_to = std::clamp(to, m_from, 247);
-}
-
-void BusScanner::setWaitMs(int ms)
-{
-    m_waitMs = ms > 0 ? std::clamp(ms, kMinWaitMs, kMaxWaitMs) : 0;
-}
-
-int BusScanner::waitMs() const
-{
-    return waitFor(0);
-}
-
-int BusScanner::waitFor(int slave) const
-{
-    return m_waitMs > 0 ? m_waitMs
-                        : defaultWaitMs(settingsFor(slave), m_client->adapterLatencyMs());
-}
-
-ConnectionSettings BusScanner::settingsFor(int slave) const
-{
-    ConnectionSettings settings = m_client->settings();
-    if (m_line.isSet())
-        settings.setLine(m_line);
-    else if (slave > 0)
-        settings.setLine(m_client->driveLine(slave));
-    return settings;
 }
 
 double BusScanner::elapsedMs() const
@@ -99,15 +47,11 @@ void BusScanner::start()
 {
     if (m_running)
         return;
-    m_effectiveWaitMs = waitMs();
+    m_waits.begin();
     m_cursor = m_from;
     m_slave = 0;
-    m_recent.clear();
+    m_reasks.clear(std::max(double(kSuspectWindowMs), 4.0 * m_waits.passWaitMs()));
     m_reasking = false;
-    m_late.clear();
-    m_answered.clear();
-    m_reasks.clear();
-    m_retries.clear();
     m_lateAnswers = 0;
     m_done = 0;
     m_requests = 0;
@@ -124,7 +68,7 @@ void BusScanner::start()
         m_held = m_client;
         m_client->holdPolling();
     }
-    qCDebug(lcModel) << "scan" << m_from << "to" << m_to << "wait" << m_effectiveWaitMs << "ms";
+    qCDebug(lcModel) << "scan" << m_from << "to" << m_to << "wait" << m_waits.passWaitMs() << "ms";
     nextAddress();
 }
 
@@ -138,35 +82,20 @@ void BusScanner::cancel()
     m_client->cancel(m_pendingId);
 }
 
-int BusScanner::requestTimeoutMs(int profileIndex, bool confirming) const
-{
-    const IdentifyRule& rule = m_registry.profiles()[profileIndex].identify;
-    // A drive of its own format is asked at its rate: the waits follow it.
-    const int wait = std::max(m_effectiveWaitMs, waitFor(m_slave));
-    const int whole = wholeReplyWaitMs(settingsFor(m_slave), wait, 5 + 2 * rule.count);
-    // A drive asked again (it answered late, or its identification failed): four waits, or the
-    // connection's timeout. The last address of the pass has no next request to catch its late
-    // reply: four waits.
-    if (m_reasking)
-        return std::clamp(std::max({4 * wait, m_client->settings().timeoutMs, whole}), kMinWaitMs,
-                          kMaxWaitMs);
-    if (m_slave == m_to)
-        return std::clamp(std::max(4 * wait, whole), kMinWaitMs, kMaxWaitMs);
-    // An address that has answered (another family's read, a garbled frame) is there: its
-    // identification waits for the whole reply, which may be longer than the first byte's wait.
-    if (profileIndex > 0 || confirming)
-        return whole;
-    return wait; // empty addresses cost this wait only
-}
-
 void BusScanner::askProfile(int profileIndex, bool confirming)
 {
     const IdentifyRule& rule = m_registry.profiles()[profileIndex].identify;
     ModbusRequest request =
         rule.function == 4 ? ModbusRequest::readInput(quint8(m_slave), rule.address, rule.count)
                            : ModbusRequest::readHolding(quint8(m_slave), rule.address, rule.count);
-    request.line = m_line;
-    request.timeoutMs = requestTimeoutMs(profileIndex, confirming);
+    request.line = m_waits.line();
+    // The wait follows what is known of the address: asked again, last, heard from, or not.
+    using Asking = ScanWaits::Asking;
+    const Asking asking = m_reasking                       ? Asking::Again
+                          : m_slave == m_to                ? Asking::LastOfPass
+                          : profileIndex > 0 || confirming ? Asking::Present
+                                                           : Asking::First;
+    request.timeoutMs = m_waits.timeoutMs(m_slave, rule.count, asking);
     request.probe = !m_reasking && !confirming && profileIndex == 0;
     // Silence is the normal answer in a scan: retrying it would only double the scan time.
     request.retries = 0;
@@ -197,7 +126,7 @@ void BusScanner::handleReply(int profileIndex, bool confirming, const ModbusResu
     }
     // A device that refuses a family's read is there, whatever it turns out to be.
     if (info.state == DeviceInfo::State::Unidentified)
-        m_answered.insert(m_slave);
+        m_reasks.answered(m_slave);
     // On a half-duplex line a late answer from the address before collides with this request:
     // both frames are garbled and the address before looked silent. Ask it again, with time.
     // A whole frame from another address names its sender (noteLateAnswer()).
@@ -227,19 +156,14 @@ void BusScanner::handleReply(int profileIndex, bool confirming, const ModbusResu
                           .arg(DeviceInfo::switchText(m_slave));
     else if (info.state == DeviceInfo::State::Unidentified)
         info.detail = tr("answers, but none of the device profiles matches (%1)").arg(info.detail);
-    else if (info.state == DeviceInfo::State::Absent && m_answered.contains(m_slave))
+    else if (info.state == DeviceInfo::State::Absent && m_reasks.hasAnswered(m_slave))
         info = identificationFailed(info);
     addressDone(info);
 }
 
 DeviceInfo BusScanner::identificationFailed(DeviceInfo info)
 {
-    const int attempt = m_retries.value(m_slave) + 1;
-    if (attempt <= kIdentifyRetries) {
-        // Asked again next, with the long wait; until then it is not reported.
-        m_retries[m_slave] = attempt;
-        m_late.removeAll(m_slave);
-        m_late.prepend(m_slave);
+    if (const int attempt = m_reasks.retryIdentification(m_slave)) {
         emit identificationRetry(m_slave, attempt, kIdentifyRetries);
         return info;
     }
@@ -277,47 +201,33 @@ void BusScanner::noteLateAnswer(const ModbusResult& result)
         sender = quint8(result.reply.at(0));
     if (sender < 0)
         return;
-    const bool known = std::any_of(m_devices.begin(), m_devices.end(),
-                                   [sender](const DeviceInfo& d) { return d.slave == sender; });
+    const bool known = reported(sender);
     if (!known)
-        m_answered.insert(sender); // a whole frame with its number: it is there
+        m_reasks.answered(sender); // a whole frame with its number: it is there
     if (sender == m_slave || known)
         return;
     qCDebug(lcModel) << "scan: late answer from" << sender << "while asking" << m_slave;
     askAgainLater(sender);
 }
 
+bool BusScanner::reported(int slave) const
+{
+    return std::any_of(m_devices.begin(), m_devices.end(),
+                       [slave](const DeviceInfo& d) { return d.slave == slave; });
+}
+
 void BusScanner::askAgainLater(int slave)
 {
     // Only an address this pass has already judged silent.
-    const bool known = std::any_of(m_devices.begin(), m_devices.end(),
-                                   [slave](const DeviceInfo& d) { return d.slave == slave; });
-    if (slave < m_from || slave >= m_cursor || slave == m_slave || known ||
-        m_late.contains(slave) || m_reasks.value(slave) >= kIdentifyRetries)
+    if (slave < m_from || slave >= m_cursor || slave == m_slave || reported(slave))
         return;
-    // Asked again with a long wait, its silence is sure: no longer suspect.
-    m_recent.erase(std::remove_if(m_recent.begin(), m_recent.end(),
-                                  [slave](const Asked& a) { return a.slave == slave; }),
-                   m_recent.end());
-    ++m_reasks[slave];
-    m_late << slave;
-}
-
-double BusScanner::suspectWindowMs() const
-{
-    return std::max(double(kSuspectWindowMs), 4.0 * m_effectiveWaitMs);
+    m_reasks.askLate(slave);
 }
 
 void BusScanner::askRecentAgain()
 {
-    // Counted back from when the current address was asked: its own wait may be long.
-    const double fromMs = m_askedAtMs - suspectWindowMs();
-    QVector<int> suspects;
-    for (const Asked& a : m_recent)
-        if (a.atMs >= fromMs)
-            suspects << a.slave;
-    for (int slave : suspects)
-        askAgainLater(slave); // removes it from m_recent
+    for (int slave : m_reasks.suspects(m_askedAtMs))
+        askAgainLater(slave); // no longer a suspect once queued
 }
 
 void BusScanner::addressDone(DeviceInfo info)
@@ -325,14 +235,14 @@ void BusScanner::addressDone(DeviceInfo info)
     if (!m_reasking)
         ++m_done;
     if (info.state != DeviceInfo::State::Absent) {
-        info.line = m_line.isSet() ? m_line : LineFormat();
+        info.line = m_waits.line().isSet() ? m_waits.line() : LineFormat();
         if (!info.line.isSet() && m_client->hasOwnLine(info.slave))
             info.line = m_client->driveLine(info.slave);
         if (m_reasking && info.state != DeviceInfo::State::IdentifyFailed) {
             ++m_lateAnswers;
             const QString late = tr("answered late at first (after the %1 ms wait); a longer "
                                     "wait makes scans of this bus reliable")
-                                     .arg(m_effectiveWaitMs);
+                                     .arg(m_waits.passWaitMs());
             info.detail = info.detail.isEmpty() ? late : info.detail + QStringLiteral("; ") + late;
         }
         const auto at =
@@ -342,11 +252,7 @@ void BusScanner::addressDone(DeviceInfo info)
         emit found(info);
     }
     if (!m_reasking) {
-        if (info.state == DeviceInfo::State::Absent)
-            m_recent.append({m_slave, m_askedAtMs});
-        const double keepFromMs = m_askedAtMs - 2 * suspectWindowMs();
-        while (!m_recent.isEmpty() && m_recent.first().atMs < keepFromMs)
-            m_recent.removeFirst();
+        m_reasks.passed(m_slave, info.state == DeviceInfo::State::Absent, m_askedAtMs);
         emit progress(m_done, total(), m_slave);
     }
     nextAddress();
@@ -354,16 +260,16 @@ void BusScanner::addressDone(DeviceInfo info)
 
 void BusScanner::nextAddress()
 {
-    const bool more = m_cursor <= m_to || !m_late.isEmpty();
+    const bool more = m_cursor <= m_to || m_reasks.hasQueued();
     if (m_cancelRequested || !more) {
         m_cancelled = m_cancelRequested && more;
         finish();
         return;
     }
-    // A late reply of the addresses asked just before may meet the next request (m_recent); one
-    // asked again had a long wait, so its reply is not suspected.
-    m_reasking = !m_late.isEmpty();
-    m_slave = m_reasking ? m_late.takeFirst() : m_cursor++;
+    // A late reply of the addresses asked just before may meet the next request (the suspects
+    // of m_reasks); one asked again had a long wait, so its reply is not suspected.
+    m_reasking = m_reasks.hasQueued();
+    m_slave = m_reasking ? m_reasks.takeNext() : m_cursor++;
     m_askedAtMs = elapsedMs();
     askProfile(0, false);
 }

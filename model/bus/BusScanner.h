@@ -1,13 +1,13 @@
 #pragma once
 
+#include "model/bus/ScanReasks.h"
+#include "model/bus/ScanWaits.h"
 #include "model/session/DeviceInfo.h"
 #include "transport/LineFormat.h"
 
 #include <QElapsedTimer>
-#include <QHash>
 #include <QObject>
 #include <QPointer>
-#include <QSet>
 #include <QVector>
 
 namespace opentop {
@@ -21,19 +21,18 @@ struct ModbusResult;
 // Finds the drives on a bus: asks every machine number of a range with each profile's identify
 // read (DeviceIdentifier decodes the replies), one transaction at a time, asynchronously, while
 // it owns the bus (ModbusClient::holdPolling: polls wait). An empty address costs one short wait
-// for the first byte; one that answered gets a whole reply's wait, a second question when its
-// frames are garbled (a duplicate machine number?), more when its reply came late or it could
-// not be identified, and is then reported, never dropped (docs/communication.md, "Scans").
+// for the first byte; one that answered gets a whole reply's wait (ScanWaits), a second question
+// when its frames are garbled (a duplicate machine number?), more when its reply came late or it
+// could not be identified (ScanReasks), and is then reported, never dropped
+// (docs/communication.md, "Scans").
 class BusScanner : public QObject
 {
     Q_OBJECT
 public:
-    // ModbusRequest refuses timeouts below 10 ms; shorter waits are raised to it.
-    static constexpr int kMinWaitMs = 10;
-    static constexpr int kMaxWaitMs = 5000;
-    // A present device's time to answer after the request and the 3.5 character gap: the DBU
-    // manual's T3 "initial value 10 ms" (11-1); a slower one is found by the late-answer rescue.
-    static constexpr double kAnswerBudgetMs = 10.0;
+    // The waits' limits and the answer budget they allow a drive (ScanWaits).
+    static constexpr int kMinWaitMs = ScanWaits::kMinWaitMs;
+    static constexpr int kMaxWaitMs = ScanWaits::kMaxWaitMs;
+    static constexpr double kAnswerBudgetMs = ScanWaits::kAnswerBudgetMs;
     // Times an address that answered is asked again before it is reported unidentified.
     static constexpr int kIdentifyRetries = 3;
     // How far back a garbled frame makes silent addresses suspect: several waits, at least this
@@ -43,26 +42,26 @@ public:
     BusScanner(ModbusClient* client, const ProfileRegistry& registry, QObject* parent = nullptr);
     ~BusScanner() override;
 
-    // Per-address wait for the first byte of a reply, from sending: the request's transmission
-    // + the 3.5 character gap + the answer budget + a small margin + what the adapter adds
-    // (a USB adapter without low latency holds received bytes up to its latency timer). Only
-    // the first byte has to come within it; the rest of a reply is read by the byte timeout.
-    static int defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs = 0);
-    // The wait for a whole reply of `replyBytes` when its first byte may come as late as
-    // `firstByteWaitMs` (also where the adapter passes it on only whole).
+    // Per-address wait for the first byte of a reply, and for a whole reply (ScanWaits).
+    static int defaultWaitMs(const ConnectionSettings& settings, int adapterLatencyMs = 0)
+    {
+        return ScanWaits::defaultWaitMs(settings, adapterLatencyMs);
+    }
     static int wholeReplyWaitMs(const ConnectionSettings& settings, int firstByteWaitMs,
-                                int replyBytes);
+                                int replyBytes)
+    {
+        return ScanWaits::wholeReplyWaitMs(settings, firstByteWaitMs, replyBytes);
+    }
 
     // Range and wait for the next start(); waitMs 0 uses defaultWaitMs().
     void setRange(int from, int to);
-    void setWaitMs(int ms);
-    // The format every request of the next start() goes out in (a pass for drives of another
-    // format); unset: each drive's own (ModbusClient::driveLine), else the port's.
-    void setLine(const LineFormat& format) { m_line = format; }
-    LineFormat line() const { return m_line; }
+    void setWaitMs(int ms) { m_waits.setWaitMs(ms); }
+    // The format every request of the next start() goes out in (ScanWaits::setLine).
+    void setLine(const LineFormat& format) { m_waits.setLine(format); }
+    LineFormat line() const { return m_waits.line(); }
     int from() const { return m_from; }
     int to() const { return m_to; }
-    int waitMs() const;
+    int waitMs() const { return m_waits.waitFor(0); }
 
     void start();
     // Stops between transactions: the one on the wire completes, then finished() follows.
@@ -100,15 +99,11 @@ private:
     void noteLateAnswer(const ModbusResult& result);
     void askAgainLater(int slave);
     void askRecentAgain();
-    double suspectWindowMs() const;
-    int requestTimeoutMs(int profileIndex, bool confirming) const;
+    // Whether `slave` has been reported (found(), in devices()).
+    bool reported(int slave) const;
     // The address answered before; its identification has just failed.
     DeviceInfo identificationFailed(DeviceInfo info);
     void addressDone(DeviceInfo info);
-    // The wait for `slave`: the given one, else derived from the format it is asked in.
-    int waitFor(int slave) const;
-    // The connection's settings in the format `slave` is asked in.
-    ConnectionSettings settingsFor(int slave) const;
     void nextAddress();
     void finish();
 
@@ -118,26 +113,12 @@ private:
     DeviceIdentifier* m_identifier;
     int m_from = 1;
     int m_to = 247;
-    int m_waitMs = 0;
-    LineFormat m_line;
-    int m_effectiveWaitMs = 0;
-    int m_cursor = 1; // the next address of the pass through the range
-    int m_slave = 0;  // the address being asked
-    // Addresses asked with a short wait and judged silent, with when they were asked: a garbled
-    // frame may be any of their late replies meeting a later request (a drive slower than the
-    // wait, a busy machine), not only the one before's.
-    struct Asked
-    {
-        int slave;
-        double atMs;
-    };
-    QVector<Asked> m_recent;
+    ScanWaits m_waits;
+    int m_cursor = 1;       // the next address of the pass through the range
+    int m_slave = 0;        // the address being asked
     double m_askedAtMs = 0; // when m_slave's first request went out
     bool m_reasking = false;
-    QVector<int> m_late;       // answered after the wait: to be asked again
-    QSet<int> m_answered;      // sent a whole frame of some kind (an exception, a late reply)
-    QHash<int, int> m_reasks;  // times each address was asked again for a late reply
-    QHash<int, int> m_retries; // times each address was asked again after it answered
+    ScanReasks m_reasks{kIdentifyRetries};
     int m_lateAnswers = 0;
     int m_done = 0;
     int m_requests = 0;

@@ -1,6 +1,7 @@
 #include "model/bus/DriveStatusPoller.h"
 
 #include "model/bus/BusDrives.h"
+#include "model/profile/CodeTable.h"
 #include "model/profile/RoleEvaluator.h"
 #include "model/profile/ValueCodec.h"
 #include "model/session/DeviceSession.h"
@@ -25,107 +26,6 @@ constexpr qint64 kExternalInterrupt = 0x0F;
 constexpr qint64 kMemoryError = 0x0D;
 
 } // namespace
-
-QString DriveStatus::communicationText() const
-{
-    if (!polled)
-        return DriveStatusPoller::tr("not polled yet");
-    if (consecutiveFailures == 0)
-        return DriveStatusPoller::tr("online");
-    if (!answered || consecutiveFailures >= kNoAnswerAfter)
-        return DriveStatusPoller::tr("no answer (%n poll(s) in a row)", nullptr,
-                                     consecutiveFailures);
-    return DriveStatusPoller::tr("communication error (%n in a row)", nullptr, consecutiveFailures);
-}
-
-QString DriveStatus::ledText() const
-{
-    if (!polled)
-        return DriveStatusPoller::tr("Status not known yet");
-    if (led == Led::Grey)
-        return DriveStatusPoller::tr("No answer: %1").arg(error);
-    // An alarm outranks a communication error (as the LED shows it).
-    if (consecutiveFailures > 0 && !alarmActive.value_or(false))
-        return DriveStatusPoller::tr("Communication error: %1").arg(error);
-    return lastStateText();
-}
-
-QString DriveStatus::lastStateText() const
-{
-    if (!answered)
-        return DriveStatusPoller::tr("Status not known yet");
-    if (alarmActive.value_or(false)) {
-        if (alarm)
-            return DriveStatusPoller::tr("Alarm %1 %2").arg(alarm->panel, alarm->name);
-        if (alarmCode)
-            return DriveStatusPoller::tr("Alarm %1h (not in the alarm table)")
-                .arg(QString::number(*alarmCode, 16).toUpper());
-        return DriveStatusPoller::tr("Alarm active");
-    }
-    if (running.value_or(false)) {
-        if (!reverse)
-            return DriveStatusPoller::tr("Running");
-        return *reverse ? DriveStatusPoller::tr("Running CCW")
-                        : DriveStatusPoller::tr("Running CW");
-    }
-    return DriveStatusPoller::tr("Stopped, no alarm");
-}
-
-QString DriveStatus::ledName(Led led)
-{
-    switch (led) {
-    case Led::Grey:
-        return DriveStatusPoller::tr("grey");
-    case Led::Green:
-        return DriveStatusPoller::tr("green");
-    case Led::Orange:
-        return DriveStatusPoller::tr("orange");
-    case Led::SkyBlue:
-        return DriveStatusPoller::tr("sky blue");
-    case Led::Red:
-        return DriveStatusPoller::tr("red");
-    case Led::Purple:
-        return DriveStatusPoller::tr("purple");
-    case Led::Blue:
-        return DriveStatusPoller::tr("blue");
-    }
-    return QString();
-}
-
-QString DriveStatus::ledLight(Led led)
-{
-    switch (led) {
-    case Led::Grey:
-        return QString();
-    case Led::Green:
-        return QStringLiteral("green");
-    case Led::Orange:
-        return QStringLiteral("orange");
-    case Led::SkyBlue:
-        return QStringLiteral("skyBlue");
-    case Led::Red:
-        return QStringLiteral("red");
-    case Led::Purple:
-        return QStringLiteral("purple");
-    case Led::Blue:
-        return QStringLiteral("blue");
-    }
-    return QString();
-}
-
-QString DriveStatus::ledLabel(Led shown) const
-{
-    return ledEntry && shown == led ? ledEntry->label : ledName(shown);
-}
-
-QString DriveStatus::ledManualText() const
-{
-    if (!ledEntry)
-        return QString();
-    if (ledEntry->blink.isEmpty())
-        return ledEntry->meaning;
-    return DriveStatusPoller::tr("%1; %2").arg(ledEntry->meaning, ledEntry->blink);
-}
 
 DriveStatusPoller::DriveStatusPoller(BusDrives* drives, QObject* parent)
     : QObject(parent)

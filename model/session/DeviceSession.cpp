@@ -5,6 +5,7 @@
 #include "model/session/BlockWriter.h"
 #include "model/session/DependentValues.h"
 #include "model/session/DeviceRefusal.h"
+#include "model/session/MissingValues.h"
 #include "model/session/ReachedDrives.h"
 #include "transport/ModbusClient.h"
 
@@ -127,26 +128,6 @@ void DeviceSession::readMany(const QStringList& names, ManyDone done,
     BlockReader::read(this, names, std::move(done), priority);
 }
 
-void DeviceSession::ensureControllingValues(const ParameterMeta& meta,
-                                            std::function<void(QString)> then)
-{
-    for (const QString& controlling : meta.controllingParameters()) {
-        if (m_cache.contains(controlling))
-            continue;
-        // Read what the allowed values depend on first, then try again.
-        read(controlling, [this, &meta, then](const Outcome& o) {
-            if (!o.ok) {
-                then(tr("cannot check the value: reading %1 failed: %2")
-                         .arg(nameFor(o.parameter), o.error));
-                return;
-            }
-            ensureControllingValues(meta, then);
-        });
-        return;
-    }
-    then(QString());
-}
-
 void DeviceSession::write(const QString& name, const QString& text, const WriteOptions& options,
                           Done done)
 {
@@ -164,8 +145,8 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
         done(outcome);
         return;
     }
-    ensureControllingValues(*meta, [this, meta, text, options, outcome,
-                                    done](const QString& problem) mutable {
+    MissingValues(this).readControlling(*meta, [this, meta, text, options, outcome,
+                                                done](const QString& problem) mutable {
         if (!problem.isEmpty()) {
             outcome.error = problem;
             done(outcome);
@@ -183,8 +164,8 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
         for (const QString& c : options.companions)
             dependents.removeAll(c);
         const QVector<quint16> registers = encoded.registers;
-        ensureCached(dependents, [this, meta, registers, options, outcome,
-                                  done](const QString& readProblem) mutable {
+        MissingValues(this).read(dependents, [this, meta, registers, options, outcome,
+                                              done](const QString& readProblem) mutable {
             const qint64 raw = qint64(ValueCodec::registersToRaw(*meta, registers));
             const QString refusal =
                 readProblem.isEmpty()
@@ -210,24 +191,6 @@ void DeviceSession::write(const QString& name, const QString& text, const WriteO
                                    reached.verifying(meta, registers, done));
                           });
         });
-    });
-}
-
-void DeviceSession::ensureCached(QStringList names, std::function<void(QString)> then)
-{
-    while (!names.isEmpty() && m_cache.contains(names.first()))
-        names.removeFirst();
-    if (names.isEmpty()) {
-        then(QString());
-        return;
-    }
-    const QString name = names.takeFirst();
-    read(name, [this, names, then](const Outcome& o) {
-        if (!o.ok && !m_cache.contains(o.parameter)) {
-            then(tr("reading %1 failed: %2").arg(nameFor(o.parameter), o.error));
-            return;
-        }
-        ensureCached(names, then);
     });
 }
 

@@ -136,9 +136,6 @@ signals:
 private:
     const ParameterMeta* lookup(const QString& name, Outcome* outcome) const;
     friend class BlockReader; // readMany's blocks name parameters as lookup() does
-    void ensureControllingValues(const ParameterMeta& meta, std::function<void(QString)> then);
-    // Reads those of `names` not cached yet; `then` gets the first failure, or nothing.
-    void ensureCached(QStringList names, std::function<void(QString)> then);
     // `busyRetries`: how often a setting is sent again when the drive refused it only because
     // it was busy (its communication error register says so: nothing was executed).
     // A setting with a `writeBlock` reads the rest of its block first and goes as that frame.
