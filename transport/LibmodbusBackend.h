@@ -1,30 +1,30 @@
 #pragma once
 
 #include "transport/ConnectionSettings.h"
+#include "transport/LateReplyWatch.h"
+#include "transport/LibmodbusContext.h"
+#include "transport/LineInput.h"
 #include "transport/LineNotes.h"
+#include "transport/LineTiming.h"
 #include "transport/ModbusBackend.h"
-
-#include <QElapsedTimer>
-#include <QSet>
-#include <QVector>
-
-struct _modbus; // libmodbus' modbus_t, kept out of this header
 
 namespace opentop {
 
 // What RTU and TCP share on top of libmodbus: every request goes out through
 // modbus_send_raw_request (so the traffic log shows the exact bytes), standard replies come
-// back through modbus_receive_confirmation, raw replies are read from the socket. Errors are
-// classified from errno. RTU has no transaction ids, so after an error the master resynchronises
-// before anything else goes out: it reads and discards until the line has fallen silent, that is
+// back through modbus_receive_confirmation, raw replies are read from the socket
+// (LibmodbusContext holds the context, LineInput reads the socket). Errors are classified from
+// errno. RTU has no transaction ids, so after an error the master resynchronises before
+// anything else goes out: it reads and discards until the line has fallen silent, that is
 // until the late-reply window of the failed request has passed (a reply can still start up to
 // one more timeout after the timeout, see lateReplyWindowMs()) and nothing has arrived for a
 // frame time, then flushes. Only then can a late reply not be taken for the answer to the retry
 // or the next request. After a timeout with nothing received that wait is deferred: it happens
 // before the next request to the same slave (or a broadcast, or when bytes are arriving), while
 // a request to another slave goes out at once, because a late reply carries its sender's id and
-// is then rejected as a wrong-slave reply. This keeps scans of empty addresses at one wait each.
-// On a half-duplex line a reply still on the wire collides with any request, though: LineNotes.
+// is then rejected as a wrong-slave reply. This keeps scans of empty addresses at one wait each
+// (LateReplyWatch remembers who may still answer). On a half-duplex line a reply still on the
+// wire collides with any request, though: LineNotes. LineTiming keeps the gaps between frames.
 class LibmodbusBackend : public ModbusBackend
 {
 public:
@@ -40,14 +40,14 @@ public:
     // carries another (ModbusRequest::line). Timings (gaps, byte timeout) follow it.
     const ConnectionSettings& lineSettings() const { return m_line; }
     // Bus silence after a broadcast; < 0 restores the default.
-    void setTurnaroundMs(int ms) { m_turnaroundMs = ms; }
-    int turnaroundMs() const;
+    void setTurnaroundMs(int ms) { m_timing.setTurnaroundMs(ms); }
+    int turnaroundMs() const { return m_timing.turnaroundMs(defaultTurnaroundMs()); }
     virtual int defaultTurnaroundMs() const = 0;
     // Silence kept between the end of the last frame on the line and the next request (the
     // Modbus RTU inter-frame gap); < 0 restores the default, 0 keeps none (benchmarks that
     // compare with a plain loop on a pty).
-    void setFrameGapMs(double ms) { m_frameGapMs = ms; }
-    double frameGapMs() const;
+    void setFrameGapMs(double ms) { m_timing.setFrameGapMs(ms); }
+    double frameGapMs() const { return m_timing.frameGapMs(defaultFrameGapMs()); }
     virtual double defaultFrameGapMs() const { return 0; }
 
 protected:
@@ -75,17 +75,15 @@ protected:
     // *error when it cannot. This one refuses: only a serial line has a format to switch.
     virtual bool applyLineFormat(const LineFormat& format, QString* error);
 
-    // 1 readable, 0 timed out, -1 interrupted; waits in short slices.
-    int waitReadable(double timeoutMs) const;
-    // read() on the connection's descriptor: bytes read, 0 at end of stream, -1 (errno) on error.
-    int readSome(char* buffer, int maximum) const;
-    // Errors after which the connection is gone (unplugged adapter, closed socket).
-    static bool isFatalErrno(int err);
+    // The connection's descriptor read directly (LineInput).
+    LineInput input() const { return LineInput(descriptor(), *this); }
+    int waitReadable(double timeoutMs) const { return input().waitReadable(timeoutMs); }
+    int readSome(char* buffer, int maximum) const { return input().readSome(buffer, maximum); }
     // Fills `result` with a PortError; closes the backend when the error is fatal.
     void portFailure(int err, const QString& what, ModbusResult* result);
-    double elapsedMs() const { return double(m_timer.nsecsElapsed()) / 1e6; }
-    _modbus* context() const { return m_ctx; }
-    int descriptor() const;
+    double elapsedMs() const { return m_timing.elapsedMs(); }
+    _modbus* context() const { return m_modbus.get(); }
+    int descriptor() const { return m_modbus.socket(); }
 
 private:
     void receiveStandard(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
@@ -94,25 +92,18 @@ private:
     // After a reply that was garbled, foreign, malformed or incomplete: waits until the failed
     // request's late-reply window has passed and the line is quiet (see the class comment).
     void recover(const ModbusRequest& request, int timeoutMs);
-    // On m_clock: until when a reply to the request sent last may still start.
+    // Until when a reply to the request sent last may still start.
     double replyDeadlineMs(const ModbusRequest& request, int timeoutMs) const;
     // Reads and discards until the line has been quiet for `quietMs` (the first window may be
     // shorter), then flushes.
     void drain(const ModbusRequest& request, double firstWindowMs, int quietMs);
-    // After a silent timeout: remembers until when a late reply from that slave could start.
-    void deferRecovery(const ModbusRequest& request, int timeoutMs);
     // Before sending: completes a deferred drain where the id check cannot protect us.
     void awaitLateReplies(const ModbusRequest& request);
-    // A slave whose request failed may still answer it, later than any window: for a while
-    // every reply from it is checked for another reply right behind it (issue 11's fault
-    // matrix: a reply 1 s late answered a read of the same length).
-    void suspect(quint8 slave, int timeoutMs);
-    bool isSuspect(quint8 slave);
-    // After a complete reply: true when more bytes come before the request's own reply could
-    // have ended, so that the reply taken may have been a late answer to an earlier request.
+    // After a complete reply from a suspect (LateReplyWatch; never on TCP): true when more
+    // bytes come before the request's own reply could have ended, so that the reply taken may
+    // have been a late answer to an earlier request.
     bool anotherReplyFollows(const ModbusRequest& request, int frameBytes);
-    void setResponseTimeout(double ms);
-    double nowMs() const; // on m_clock
+    double nowMs() const { return m_timing.nowMs(); }
     // Waits until the line has been silent for the frame gap; false when interrupted.
     bool keepFrameGap();
     // Before a request in another format than the line's: the gap after the last frame is
@@ -122,25 +113,11 @@ private:
 
     ConnectionSettings m_settings;
     ConnectionSettings m_line; // m_settings in the format in force
-    _modbus* m_ctx = nullptr;
+    LibmodbusContext m_modbus;
     bool m_open = false;
-    int m_turnaroundMs = -1;
-    QElapsedTimer m_timer; // since the current request was sent
-    double m_sentAtMs = 0; // on m_clock: when the current request was sent
-    struct LateWatch
-    {
-        quint8 slave = 0;
-        double untilMs = 0; // on m_clock
-        int quietMs = 0;
-    };
-    QVector<LateWatch> m_lateWatch;  // slaves that timed out silently, quiet time not yet over
-    QVector<LateWatch> m_suspects;   // slaves whose replies are checked for a second reply
-    QElapsedTimer m_clock;           // monotonic time for m_lateWatch
-    LineNotes m_notes;               // what was discarded, a held line
-    double m_suspectAllUntilMs = 0;  // on m_clock: every slave is a suspect until then (open())
-    QSet<quint8> m_checkedSinceOpen; // slaves whose first exchange was checked (isSuspect())
-    double m_frameGapMs = -1;
-    double m_lineActiveAtMs = -1e9; // on m_clock: the end of the last frame on the line
+    LineTiming m_timing;   // the clock of every time below, the gaps kept
+    LateReplyWatch m_late; // who may still answer a failed request
+    LineNotes m_notes;     // what was discarded, a held line
 };
 
 } // namespace opentop

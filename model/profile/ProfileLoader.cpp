@@ -2,6 +2,7 @@
 
 #include "model/profile/JsonReader.h"
 #include "model/profile/ParameterReader.h"
+#include "model/profile/ProfileCrossCheck.h"
 #include "model/profile/SettingReference.h"
 #include "model/profile/VariantProbe.h"
 #include "transport/LineFormat.h"
@@ -21,21 +22,6 @@ namespace {
 QString tr(const char* text)
 {
     return QCoreApplication::translate("opentop::ProfileLoader", text);
-}
-
-bool rawAllowedBy(const ValueSpec& spec, double raw)
-{
-    if (spec.ranges.isEmpty() && spec.options.isEmpty())
-        return true;
-    for (const EnumOption& o : spec.options) {
-        if (double(o.value) == raw)
-            return true;
-    }
-    for (const ValueRange& r : spec.ranges) {
-        if (raw >= r.min && raw <= r.max)
-            return true;
-    }
-    return false;
 }
 
 bool readHeader(const QJsonObject& root, JsonReader& json, Profile* p)
@@ -206,76 +192,6 @@ bool readCodeTables(const QJsonObject& root, JsonReader& json, Profile* p)
     return true;
 }
 
-// Checks that need every parameter: references, defaults, overlaps, the identify read.
-bool crossCheck(const QJsonObject& root, JsonReader& json, Profile* p)
-{
-    QHash<quint32, QString> holding, input;
-    for (const ParameterMeta& m : p->parameters) {
-        const QString where = QStringLiteral("\"%1\"").arg(m.name);
-        if (!m.storeWith.isEmpty()) {
-            const ParameterMeta* store = p->parameter(m.storeWith);
-            if (!store || store->kind != QLatin1String("command"))
-                return json.fail(
-                    tr("%1: storeWith \"%2\" is not a command parameter").arg(where, m.storeWith));
-        }
-        if (m.spec.defaultRaw && !rawAllowedBy(m.spec, *m.spec.defaultRaw))
-            return json.fail(tr("%1: the default is not among its allowed values").arg(where));
-        for (const BitField& b : m.bits) {
-            const ParameterMeta* f = b.function.isEmpty() ? nullptr : p->parameter(b.function);
-            if (!b.function.isEmpty() && (!f || !f->isReadable()))
-                return json.fail(tr("%1: bit field \"%2\": function \"%3\" is not a readable "
-                                    "parameter")
-                                     .arg(where, b.name, b.function));
-        }
-        for (const ValueCondition& c : m.conditions) {
-            if (!c.param.isEmpty() && (c.param == m.name || !p->parameter(c.param)))
-                return json.fail(
-                    tr("%1: condition on unknown parameter \"%2\"").arg(where, c.param));
-            if (c.spec.defaultRaw && !rawAllowedBy(c.spec, *c.spec.defaultRaw))
-                return json.fail(tr("%1: the default is not allowed when %2")
-                                     .arg(where, c.variant.isEmpty() ? c.param : c.variant));
-        }
-        if (m.kind == QLatin1String("reserved") && !m.readFunction && !m.writeFunction)
-            continue;
-        const bool inInput = m.readFunction == 4;
-        QHash<quint32, QString>& space = inInput ? input : holding;
-        for (int r = 0; r < m.registerCount; ++r) {
-            const quint32 address = quint32(m.address) + r;
-            if (address > 0xFFFF)
-                return json.fail(tr("%1 runs past address 0xFFFF").arg(where));
-            if (space.contains(address))
-                return json.fail(
-                    tr("%1 overlaps \"%2\" at 0x%3 (%4 registers)")
-                        .arg(where, space.value(address))
-                        .arg(address, 4, 16, QLatin1Char('0'))
-                        .arg(inInput ? QStringLiteral("input") : QStringLiteral("holding")));
-            space.insert(address, m.name);
-        }
-    }
-    const QJsonObject id = json.object(root, QStringLiteral("identify")).value_or(QJsonObject());
-    p->identify.function = quint8(json.integer(id, QStringLiteral("function")).value_or(0));
-    p->identify.address = quint16(json.integer(id, QStringLiteral("address")).value_or(0));
-    p->identify.count = quint16(json.integer(id, QStringLiteral("count")).value_or(0));
-    p->identify.nameParameter = json.string(id, QStringLiteral("name")).value_or(QString());
-    p->identify.versionParameter =
-        json.string(id, QStringLiteral("version"), false).value_or(QString());
-    p->identify.nameMatch = json.string(id, QStringLiteral("nameMatch"), false).value_or(QString());
-    if (json.failed())
-        return false;
-    for (const QString& name : {p->identify.nameParameter, p->identify.versionParameter}) {
-        if (name.isEmpty())
-            continue;
-        const ParameterMeta* m = p->parameter(name);
-        if (!m || m->readFunction != p->identify.function || m->address < p->identify.address ||
-            m->address + m->registerCount > p->identify.address + p->identify.count)
-            return json.fail(
-                tr("identify: \"%1\" must be a parameter inside the identify read").arg(name));
-    }
-    if (!QRegularExpression(p->identify.nameMatch).isValid())
-        return json.fail(tr("identify.nameMatch is not a valid regular expression"));
-    return true;
-}
-
 bool readRoles(const QJsonObject& root, JsonReader& json, Profile* p)
 {
     const QJsonObject roles = root.value(QStringLiteral("roles")).toObject();
@@ -326,7 +242,7 @@ bool readRoles(const QJsonObject& root, JsonReader& json, Profile* p)
         }
         if (role.value) {
             const ParameterMeta* m = p->parameter(role.parameter);
-            if (!m->isWritable() || !rawAllowedBy(m->spec, double(*role.value)))
+            if (!m->isWritable() || !ProfileCrossCheck::allows(m->spec, double(*role.value)))
                 return json.fail(tr("%1: %2 is not a value \"%3\" can be written with")
                                      .arg(where)
                                      .arg(*role.value)
@@ -459,7 +375,7 @@ std::optional<Profile> ProfileLoader::loadJson(const QByteArray& data, const QSt
         profile.parameters << meta;
     }
     profile.index();
-    if (!crossCheck(root, json, &profile) || !readRoles(root, json, &profile) ||
+    if (!ProfileCrossCheck::check(root, json, &profile) || !readRoles(root, json, &profile) ||
         !readDecelerationKnobs(root, json, &profile) || !readStatusLed(root, json, &profile))
         return failWith(detail);
     if (const QString probe = VariantProbe::check(profile, profile.variantProbe); !probe.isEmpty())

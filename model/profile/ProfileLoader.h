@@ -8,7 +8,8 @@
 
 namespace opentop {
 
-// Reads a profile from JSON and validates it all; a bad one is refused naming file and entry.
+// Reads a profile from JSON and validates it all (ProfileCrossCheck: what needs every parameter);
+// a bad one is refused naming file and entry.
 class ProfileLoader
 {
 public:

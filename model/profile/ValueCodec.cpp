@@ -4,7 +4,6 @@
 #include <QRegularExpression>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace opentop {
@@ -50,135 +49,7 @@ QString normalizedLabel(QString text)
     return text;
 }
 
-const EnumOption* findOption(const ValueSpec& spec, double raw)
-{
-    for (const EnumOption& o : spec.options) {
-        if (static_cast<double>(o.value) == raw)
-            return &o;
-    }
-    return nullptr;
-}
-
-// A 32-bit value as two registers in the parameter's word order.
-QVector<quint16> words(const ParameterMeta& meta, quint32 v)
-{
-    const quint16 high = static_cast<quint16>(v >> 16);
-    const quint16 low = static_cast<quint16>(v & 0xFFFF);
-    if (meta.wordOrder == WordOrder::LowFirst)
-        return {low, high};
-    return {high, low};
-}
-
 } // namespace
-
-quint32 ValueCodec::fieldMask(const ParameterMeta& meta)
-{
-    quint32 mask = 0;
-    for (const BitField& b : meta.bits) {
-        for (int i = b.bit; i < b.bit + b.width && i < 32; ++i)
-            mask |= quint32(1) << i;
-    }
-    return mask;
-}
-
-bool ValueCodec::wordsSwapped(const ParameterMeta& meta, quint32 wide)
-{
-    if (meta.type != DataType::Bits || meta.registerCount != 2)
-        return false;
-    const quint32 mask = fieldMask(meta);
-    const bool lowHalf = (mask & 0xFFFF0000u) == 0;
-    const bool highHalf = (mask & 0x0000FFFFu) == 0;
-    if (mask == 0 || (!lowHalf && !highHalf) || (wide & mask) != 0)
-        return false;
-    // Every field is in one word, which reads 0, and the other word holds bits only where the
-    // fields are: the drive keeps the word in the other register.
-    const quint32 moved = (wide >> 16) | (wide << 16);
-    return moved != 0 && (moved & ~mask) == 0;
-}
-
-double ValueCodec::registersToRaw(const ParameterMeta& meta, const QVector<quint16>& regs)
-{
-    const bool lowFirst = meta.wordOrder == WordOrder::LowFirst;
-    const quint32 wide = regs.size() >= 2 ? lowFirst ? (quint32(regs[1]) << 16) | regs[0]
-                                                     : (quint32(regs[0]) << 16) | regs[1]
-                                          : (regs.isEmpty() ? 0u : regs[0]);
-    switch (meta.type) {
-    case DataType::U16:
-        return regs.isEmpty() ? 0 : regs[0];
-    case DataType::S16:
-        return regs.isEmpty() ? 0 : static_cast<qint16>(regs[0]);
-    case DataType::U32:
-        return wide;
-    case DataType::S32:
-        return static_cast<qint32>(wide);
-    case DataType::Bits:
-        if (meta.registerCount < 2)
-            return regs.isEmpty() ? 0 : regs[0];
-        return wordsSwapped(meta, wide) ? (wide >> 16) | (wide << 16) : wide;
-    case DataType::F32: {
-        float f;
-        std::memcpy(&f, &wide, sizeof f);
-        return f;
-    }
-    case DataType::String:
-        return 0;
-    }
-    return 0;
-}
-
-QVector<quint16> ValueCodec::rawToRegisters(const ParameterMeta& meta, double raw)
-{
-    switch (meta.type) {
-    case DataType::U16:
-    case DataType::S16:
-        return {static_cast<quint16>(static_cast<qint64>(std::llround(raw)) & 0xFFFF)};
-    case DataType::Bits:
-        if (meta.registerCount < 2)
-            return {static_cast<quint16>(static_cast<qint64>(std::llround(raw)) & 0xFFFF)};
-        [[fallthrough]];
-    case DataType::U32:
-    case DataType::S32: {
-        const quint32 v = static_cast<quint32>(static_cast<qint64>(std::llround(raw)) & 0xFFFFFFFF);
-        return words(meta, v);
-    }
-    case DataType::F32: {
-        const float f = static_cast<float>(raw);
-        quint32 v;
-        std::memcpy(&v, &f, sizeof v);
-        return words(meta, v);
-    }
-    case DataType::String:
-        return QVector<quint16>(meta.registerCount, 0);
-    }
-    return {};
-}
-
-QString ValueCodec::formatNumber(double number, int decimals)
-{
-    QString text = QString::number(number, 'f', decimals);
-    if (text.startsWith(QLatin1Char('-')) && text.toDouble() == 0.0)
-        text.remove(0, 1); // no "-0.0"
-    return text;
-}
-
-QString ValueCodec::recommendedText(const ParameterMeta& meta, const ValueContext& context)
-{
-    QString unresolved;
-    const ValueSpec& spec = meta.specFor(context, &unresolved);
-    if (!unresolved.isEmpty() || spec.recommended.isEmpty())
-        return QString();
-    QStringList ranges;
-    for (const ValueRange& r : spec.recommended) {
-        const QString lo = formatNumber(r.min * spec.scale, spec.decimals);
-        const QString hi = formatNumber(r.max * spec.scale, spec.decimals);
-        ranges << (r.min == r.max ? lo : lo + QStringLiteral("–") + hi);
-    }
-    const QString last = ranges.takeLast();
-    QString text = ranges.isEmpty() ? last : ranges.join(QStringLiteral(", ")) + tr(" or ") + last;
-    if (!spec.unit.isEmpty())
-        text += QLatin1Char(' ') + spec.unit;
-    return text;
-}
 
 QString ValueCodec::recommendationWarning(const ParameterMeta& meta, double raw,
                                           const ValueContext& context)
@@ -191,35 +62,6 @@ QString ValueCodec::recommendationWarning(const ParameterMeta& meta, double raw,
                           (spec.unit.isEmpty() ? QString() : QLatin1Char(' ') + spec.unit);
     return tr("%1: %2 is outside the recommended range %3; it is allowed and will be written")
         .arg(context.nameFor(meta.name), shown, recommendedText(meta, context));
-}
-
-QString ValueCodec::allowedText(const ParameterMeta& meta, const ValueContext& context)
-{
-    QString unresolved;
-    const ValueSpec& spec = meta.specFor(context, &unresolved);
-    if (!unresolved.isEmpty())
-        return tr("depends on %1, which is not known yet").arg(context.nameFor(unresolved));
-    if (meta.type == DataType::String)
-        return tr("text of up to %1 characters").arg(meta.registerCount * 2);
-    QStringList ranges;
-    for (const ValueRange& r : spec.ranges) {
-        const QString lo = formatNumber(r.min * spec.scale, spec.decimals);
-        const QString hi = formatNumber(r.max * spec.scale, spec.decimals);
-        ranges << (r.min == r.max ? lo : lo + QStringLiteral("–") + hi);
-    }
-    QString text;
-    if (!ranges.isEmpty()) {
-        const QString last = ranges.takeLast();
-        text = ranges.isEmpty() ? last : ranges.join(QStringLiteral(", ")) + tr(" or ") + last;
-        if (!spec.unit.isEmpty())
-            text += QLatin1Char(' ') + spec.unit;
-    }
-    QStringList options;
-    for (const EnumOption& o : spec.options)
-        options << QStringLiteral("%1 (%2)").arg(o.label).arg(o.value);
-    if (!options.isEmpty())
-        text += (text.isEmpty() ? QString() : tr(", or ")) + options.join(QStringLiteral(", "));
-    return text.isEmpty() ? tr("any value") : text;
 }
 
 QString ValueCodec::checkRaw(const ParameterMeta& meta, double raw, const ValueContext& context)
@@ -254,7 +96,7 @@ QString ValueCodec::checkRaw(const ParameterMeta& meta, double raw, const ValueC
             .arg(context.nameFor(meta.name), allowedText(meta, context));
     if (spec.ranges.isEmpty() && spec.options.isEmpty())
         return QString();
-    if (findOption(spec, raw))
+    if (ValueFormat::findOption(spec, raw))
         return QString();
     const double eps = meta.type == DataType::F32 ? 1e-9 * std::max(1.0, std::fabs(raw)) : 0.0;
     for (const ValueRange& r : spec.ranges) {
@@ -282,15 +124,7 @@ ParamValue ValueCodec::decode(const ParameterMeta& meta, const QVector<quint16>&
     }
     v.valid = true;
     if (meta.type == DataType::String) {
-        QByteArray bytes;
-        for (quint16 r : registers) {
-            bytes.append(char(r >> 8));
-            bytes.append(char(r & 0xFF));
-        }
-        const int nul = bytes.indexOf('\0');
-        if (nul >= 0)
-            bytes.truncate(nul);
-        v.text = QString::fromLatin1(bytes).trimmed();
+        v.text = RegisterLayout::registersToText(registers);
         return v;
     }
     QString unresolved;
@@ -298,7 +132,7 @@ ParamValue ValueCodec::decode(const ParameterMeta& meta, const QVector<quint16>&
     v.raw = registersToRaw(meta, registers);
     v.number = v.raw * spec.scale;
     // The English label: the value as files, recipes and scripts name it; format() shows it.
-    if (const EnumOption* o = findOption(spec, v.raw))
+    if (const EnumOption* o = ValueFormat::findOption(spec, v.raw))
         v.text = o->canonicalLabel.isEmpty() ? o->label : o->canonicalLabel;
     if (unresolved.isEmpty() && meta.kind != QLatin1String("command")) {
         v.error = checkRaw(meta, v.raw, context);
@@ -361,7 +195,6 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
             e.error = tr("%1: at most %2 characters").arg(context.nameFor(meta.name)).arg(capacity);
             return e;
         }
-        QByteArray bytes = text.toLatin1();
         for (QChar c : text) {
             if (c.unicode() < 0x20 || c.unicode() > 0x7E) {
                 e.error = tr("%1: only printable ASCII characters are allowed")
@@ -369,9 +202,7 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
                 return e;
             }
         }
-        bytes.append(QByteArray(capacity - bytes.size(), '\0'));
-        for (int i = 0; i < capacity; i += 2)
-            e.registers << quint16((quint8(bytes[i]) << 8) | quint8(bytes[i + 1]));
+        e.registers = RegisterLayout::textToRegisters(text.toLatin1(), capacity);
         e.ok = true;
         return e;
     }
@@ -457,41 +288,6 @@ ValueCodec::Encoded ValueCodec::encodeText(const ParameterMeta& meta, const QStr
     if (spec.ranges.isEmpty() && !spec.options.isEmpty())
         return encodeRaw(meta, value, context);
     return encodeNumber(meta, value, context);
-}
-
-QString ValueCodec::format(const ParameterMeta& meta, const ParamValue& value,
-                           const ValueContext& context)
-{
-    return formatAs(meta, value, context, false);
-}
-
-QString ValueCodec::formatCanonical(const ParameterMeta& meta, const ParamValue& value,
-                                    const ValueContext& context)
-{
-    return formatAs(meta, value, context, true);
-}
-
-QString ValueCodec::formatAs(const ParameterMeta& meta, const ParamValue& value,
-                             const ValueContext& context, bool canonical)
-{
-    if (!value.valid)
-        return tr("(invalid)");
-    if (meta.type == DataType::String)
-        return value.text;
-    if (meta.type == DataType::Bits) {
-        const int digits = meta.registerCount * 4;
-        return QStringLiteral("0x%1").arg(qulonglong(value.raw), digits, 16, QLatin1Char('0'));
-    }
-    const ValueSpec& spec = meta.specFor(context);
-    if (const EnumOption* o = findOption(spec, value.raw))
-        return canonical && !o->canonicalLabel.isEmpty() ? o->canonicalLabel : o->label;
-    if (spec.ranges.isEmpty() && !spec.options.isEmpty())
-        return tr("unknown code %1").arg(qlonglong(value.raw));
-    const QString number = formatNumber(value.number, spec.decimals);
-    // A spec made in code rather than read from a profile has no canonical unit.
-    const QString& unit =
-        canonical && !spec.canonicalUnit.isEmpty() ? spec.canonicalUnit : spec.unit;
-    return unit.isEmpty() ? number : number + QLatin1Char(' ') + unit;
 }
 
 } // namespace opentop

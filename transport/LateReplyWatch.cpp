@@ -1,0 +1,81 @@
+#include "transport/LateReplyWatch.h"
+
+#include "transport/LineInput.h"
+#include "transport/ModbusRequest.h"
+
+#include <algorithm>
+
+namespace opentop {
+
+void LateReplyWatch::opened(double nowMs, int timeoutMs)
+{
+    m_suspectAllUntilMs = nowMs + std::max(1000.0, 5.0 * timeoutMs);
+}
+
+void LateReplyWatch::clear()
+{
+    m_waits.clear();
+    m_suspects.clear();
+    m_checkedSinceOpen.clear();
+}
+
+void LateReplyWatch::timedOut(quint8 slave, double nowMs, int timeoutMs, double untilMs,
+                              int quietMs)
+{
+    suspect(slave, nowMs, timeoutMs);
+    m_waits.append(Entry{slave, {untilMs, quietMs}});
+}
+
+void LateReplyWatch::forgetOver(QVector<Entry>* entries, double nowMs)
+{
+    entries->erase(std::remove_if(entries->begin(), entries->end(),
+                                  [nowMs](const Entry& e) { return e.wait.untilMs <= nowMs; }),
+                   entries->end());
+}
+
+std::optional<LateReplyWatch::Wait> LateReplyWatch::dueBefore(const ModbusRequest& request,
+                                                              double nowMs, const LineInput& input)
+{
+    forgetOver(&m_waits, nowMs);
+    if (m_waits.isEmpty())
+        return std::nullopt;
+    const bool sameSlave = std::any_of(m_waits.begin(), m_waits.end(),
+                                       [&](const Entry& e) { return e.slave == request.slave; });
+    if (!sameSlave && !request.isBroadcast() && input.waitReadable(0) != 1)
+        return std::nullopt;
+    Wait all{nowMs, 0};
+    for (const Entry& e : m_waits) {
+        all.untilMs = std::max(all.untilMs, e.wait.untilMs);
+        all.quietMs = std::max(all.quietMs, e.wait.quietMs);
+    }
+    m_waits.clear();
+    return all;
+}
+
+void LateReplyWatch::suspect(quint8 slave, double nowMs, int timeoutMs)
+{
+    // Long after the late-reply window: a master without transaction ids cannot wait that
+    // long before every retry, but it can check the replies that follow.
+    const double untilMs = nowMs + std::max(3000.0, 10.0 * timeoutMs);
+    for (Entry& e : m_suspects) {
+        if (e.slave == slave) {
+            e.wait.untilMs = std::max(e.wait.untilMs, untilMs);
+            return;
+        }
+    }
+    m_suspects.append(Entry{slave, {untilMs, 0}});
+}
+
+bool LateReplyWatch::isSuspect(quint8 slave, double nowMs)
+{
+    // A slave answers its requests in order, so the previous program's unanswered request to
+    // it is answered before ours: once one exchange with it has been checked, none of its
+    // replies can still be on the way. Only the first exchange with each slave is checked.
+    if (nowMs < m_suspectAllUntilMs && !m_checkedSinceOpen.contains(slave))
+        return true;
+    forgetOver(&m_suspects, nowMs);
+    return std::any_of(m_suspects.begin(), m_suspects.end(),
+                       [slave](const Entry& e) { return e.slave == slave; });
+}
+
+} // namespace opentop

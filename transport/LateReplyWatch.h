@@ -1,0 +1,70 @@
+#pragma once
+
+#include <QSet>
+#include <QVector>
+#include <optional>
+
+namespace opentop {
+
+class LineInput;
+struct ModbusRequest;
+
+// Which slaves may still answer a request that failed, for a master without transaction ids
+// (LibmodbusBackend does the reading). Two records, all times in ms on the backend's clock:
+// the waits after silent timeouts (until when a late reply from that slave could start, and the
+// quiet time that ends it), and the suspects, whose replies are checked for another reply right
+// behind them. What is remembered and when it is forgotten; the one look at the line is
+// dueBefore()'s, whether bytes are arriving.
+class LateReplyWatch
+{
+public:
+    struct Wait
+    {
+        double untilMs = 0;
+        int quietMs = 0;
+    };
+
+    // The port was opened at `nowMs`. The program that used the line before us may have left a
+    // request unanswered (a CLI run that gave up, then exited): its late reply can reach our
+    // first request of the same shape. Until that window has passed, every slave is a suspect
+    // until its first exchange has been checked.
+    void opened(double nowMs, int timeoutMs);
+    void clear();
+
+    // A request to `slave` timed out at `nowMs` with nothing received: the slave is a suspect,
+    // a late reply may start until `untilMs`, and the line counts as quiet after `quietMs`
+    // without a byte.
+    void timedOut(quint8 slave, double nowMs, int timeoutMs, double untilMs, int quietMs);
+    // Before sending `request` at `nowMs`: the waits not yet over as one (the latest end, the
+    // longest quiet time), then forgotten, when they matter to it. A late reply from the slave
+    // about to be asked again would look like its answer, and a broadcast gets no answer to
+    // check at all; bytes already arriving on `input` are a reply in progress that would collide
+    // with the request on the line. Otherwise none: a request to another slave goes out at once,
+    // because a late reply carries its sender's id and is rejected as a wrong-slave reply.
+    std::optional<Wait> dueBefore(const ModbusRequest& request, double nowMs,
+                                  const LineInput& input);
+
+    // A slave whose request failed may still answer it, later than any window: for a while
+    // every reply from it is checked for another reply right behind it (issue 11's fault
+    // matrix: a reply 1 s late answered a read of the same length).
+    void suspect(quint8 slave, double nowMs, int timeoutMs);
+    bool isSuspect(quint8 slave, double nowMs);
+    // An exchange with `slave` went well with no reply behind it (or none looked for): a reply
+    // the line's previous user left unanswered can no longer come from it (isSuspect()).
+    void checked(quint8 slave) { m_checkedSinceOpen.insert(slave); }
+
+private:
+    struct Entry
+    {
+        quint8 slave = 0;
+        Wait wait;
+    };
+    static void forgetOver(QVector<Entry>* entries, double nowMs);
+
+    QVector<Entry> m_waits;          // slaves that timed out silently, quiet time not yet over
+    QVector<Entry> m_suspects;       // slaves whose replies are checked for a second reply
+    double m_suspectAllUntilMs = 0;  // every slave is a suspect until then (opened())
+    QSet<quint8> m_checkedSinceOpen; // slaves whose first exchange was checked (isSuspect())
+};
+
+} // namespace opentop
