@@ -3,7 +3,7 @@
 #include "model/bus/BusDrives.h"
 #include "model/io/OutputFile.h"
 #include "model/session/DeviceSession.h"
-#include "ui/alarms/AlarmsPage.h"
+#include "ui/alarms/AlarmRecordsView.h"
 
 #include <QPointer>
 
@@ -55,9 +55,9 @@ QString AlarmExport::csv(const QVector<DriveReport>& reports)
                     continue;
                 const std::optional<CodeEntry>& e = r.entry;
                 text += row({QString::number(d.slave), d.name, d.model, kind,
-                             QString::number(r.index), AlarmsPage::codeText(r.code),
+                             QString::number(r.index), AlarmRecordsView::codeText(r.code),
                              e ? e->panel : QString(), e ? e->name : tr("unknown code"),
-                             e ? AlarmsPage::clearedByText(e->reset) : QString(),
+                             e ? AlarmRecordsView::clearedByText(e->reset) : QString(),
                              e ? e->cause : QString(), e ? e->remedy : QString()});
             }
         }

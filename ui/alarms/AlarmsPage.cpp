@@ -6,39 +6,15 @@
 #include "ui/groups/GroupWriteCheck.h"
 #include "ui/widgets/StaleLook.h"
 
-#include <QGroupBox>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSplitter>
-#include <QTableWidget>
 #include <QVBoxLayout>
 
 namespace opentop {
 
 namespace {
-
-enum Column
-{
-    ColIndex,
-    ColCode,
-    ColPanel,
-    ColName,
-    ColClearedBy,
-    ColumnCount
-};
-
-// Where each table's history is in a report: "alarm" and "warning".
-const AlarmHistory::History* historyOf(const AlarmHistory::Report& report, int which)
-{
-    const QString table = which == 0 ? QStringLiteral("alarm") : QStringLiteral("warning");
-    for (const AlarmHistory::History& h : report.histories)
-        if (h.table == table)
-            return &h;
-    return nullptr;
-}
 
 QString modelOf(DeviceSession* session)
 {
@@ -55,8 +31,7 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     , m_history(new AlarmHistory(session, session))
     , m_title(new QLabel)
     , m_status(new QLabel)
-    , m_detail(new QLabel)
-    , m_commError(new QLabel)
+    , m_records(new AlarmRecordsView(session))
     , m_reread(new QPushButton(tr("&Re-read")))
     , m_reset(new QPushButton(tr("Reset &alarm…")))
     , m_clear(new QPushButton(tr("&Clear records…")))
@@ -69,11 +44,6 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     bold.setBold(true);
     m_title->setFont(bold);
     m_status->setWordWrap(true);
-    m_detail->setWordWrap(true);
-    m_detail->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_detail->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    m_commError->setWordWrap(true);
-    m_commError->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     auto* layout = new QVBoxLayout(this);
     // Tight: with every dock open on a 768-px laptop screen, and CJK rows taller, the page's
@@ -85,36 +55,7 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     layout->addWidget(m_status);
     m_age->setVisible(false); // once the page follows the drive live
     layout->addWidget(m_age);
-    auto* tables = new QHBoxLayout;
-    for (int which = 0; which < 2; ++which) {
-        auto* box = new QVBoxLayout;
-        m_tableLabels[which] = new QLabel;
-        auto* table = new QTableWidget(0, ColumnCount);
-        table->setHorizontalHeaderLabels(
-            {tr("#"), tr("Code"), tr("Panel"), tr("Name"), tr("Cleared by")});
-        table->setSelectionBehavior(QAbstractItemView::SelectRows);
-        table->setSelectionMode(QAbstractItemView::SingleSelection);
-        table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-        table->verticalHeader()->hide();
-        table->horizontalHeader()->setSectionResizeMode(ColName, QHeaderView::Stretch);
-        table->resizeColumnsToContents(); // empty: as wide as the headers, the name takes the rest
-        m_tables[which] = table;
-        connect(table, &QTableWidget::itemSelectionChanged, this,
-                [this, which] { showDetail(which); });
-        box->addWidget(m_tableLabels[which]);
-        box->addWidget(table);
-        tables->addLayout(box);
-    }
-    layout->addLayout(tables, 1);
-    // Side by side: stacked, the two boxes made the page too tall for a laptop with docks open.
-    auto* explanations = new QHBoxLayout;
-    for (auto [title, label] : {std::pair(tr("Cause and remedy"), m_detail),
-                                std::pair(tr("Communication error register"), m_commError)}) {
-        auto* box = new QGroupBox(title);
-        (new QVBoxLayout(box))->addWidget(label);
-        explanations->addWidget(box, 1);
-    }
-    layout->addLayout(explanations);
+    layout->addWidget(m_records, 1);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_reread);
     buttons->addStretch();
@@ -129,8 +70,6 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     connect(m_reset, &QPushButton::clicked, this, &AlarmsPage::resetAlarm);
     connect(m_clear, &QPushButton::clicked, this, &AlarmsPage::clearRecords);
 
-    m_detail->setText(tr("Select a record to see its cause and remedy."));
-    m_commError->setText(tr("Not read yet."));
     if (!m_history->supported())
         m_status->setText(tr("This drive keeps no alarm or warning records."));
     setBusy(false);
@@ -188,9 +127,9 @@ int AlarmsPage::autoRefreshes() const
 
 std::optional<qint64> AlarmsPage::shownAlarmCode() const
 {
-    if (!m_report.alarmActive.value_or(false))
+    if (!report().alarmActive.value_or(false))
         return std::nullopt;
-    const AlarmHistory::History* alarms = historyOf(m_report, 0);
+    const AlarmHistory::History* alarms = AlarmRecordsView::historyOf(report(), 0);
     if (!alarms || alarms->records.isEmpty() || alarms->records.first().empty)
         return std::nullopt;
     return alarms->records.first().code;
@@ -205,21 +144,11 @@ bool AlarmsPage::contradicts(std::optional<bool> active, std::optional<qint64> c
 {
     if (!active)
         return false; // the source does not tell
-    if (!m_report.alarmActive || *m_report.alarmActive != *active)
+    const std::optional<bool> shown = shownAlarmActive();
+    if (!shown || *shown != *active)
         return true;
     // Another alarm than the one shown (a code not read yet tells nothing).
     return *active && code && shownAlarmCode() != code;
-}
-
-QString AlarmsPage::codeText(qint64 code)
-{
-    return QString::number(code, 16).toUpper().rightJustified(2, QLatin1Char('0')) +
-           QLatin1Char('h');
-}
-
-QString AlarmsPage::clearedByText(const QString& reset)
-{
-    return CodeEntry::clearedByText(reset);
 }
 
 template <typename T>
@@ -260,13 +189,13 @@ void AlarmsPage::refresh()
 
 void AlarmsPage::readDone(const AlarmHistory::Report& report)
 {
-    showReport(report);
+    m_records->showReport(report);
     QStringList lines;
     if (!m_commandResult.isEmpty())
         lines << m_commandResult;
     m_commandResult.clear();
     if (report.alarmActive) {
-        const AlarmHistory::History* alarms = historyOf(report, 0);
+        const AlarmHistory::History* alarms = AlarmRecordsView::historyOf(report, 0);
         const AlarmHistory::Record* newest =
             alarms && !alarms->records.isEmpty() ? &alarms->records.first() : nullptr;
         if (!*report.alarmActive)
@@ -295,105 +224,6 @@ void AlarmsPage::finish(const QString& status)
         m_follower->setReading(false);
 }
 
-void AlarmsPage::showReport(const AlarmHistory::Report& report)
-{
-    m_report = report;
-    for (int which = 0; which < 2; ++which)
-        fillTable(which, historyOf(report, which));
-    m_detail->setText(tr("Select a record to see its cause and remedy."));
-
-    // Named by its label: users never see internal parameter names.
-    const QString parameter = report.commErrorParameter.isEmpty()
-                                  ? QString()
-                                  : m_session->nameFor(report.commErrorParameter);
-    if (parameter.isEmpty())
-        m_commError->setText(tr("This drive has no communication error register."));
-    else if (!report.commErrorCode)
-        m_commError->setText(tr("%1: could not be read.").arg(parameter));
-    else if (*report.commErrorCode == 0)
-        m_commError->setText(tr("%1: no error (0).").arg(parameter));
-    else if (!report.commError)
-        m_commError->setText(
-            tr("%1: %2, not a known code.").arg(parameter, codeText(*report.commErrorCode)));
-    else
-        m_commError->setText(tr("%1: %2 %3\nCause: %4\nRemedy: %5")
-                                 .arg(parameter, report.commError->panel, report.commError->name,
-                                      report.commError->cause, report.commError->remedy));
-}
-
-void AlarmsPage::fillTable(int which, const AlarmHistory::History* history)
-{
-    QTableWidget* table = m_tables[which];
-    QLabel* label = m_tableLabels[which];
-    table->clearContents();
-    table->setRowCount(0);
-    if (!history) {
-        label->setText(which == 0 ? tr("No alarm records") : tr("No warning records"));
-        table->setEnabled(false);
-        return;
-    }
-    table->setEnabled(true);
-    if (!history->ok) {
-        label->setText(tr("%1: could not be read: %2").arg(history->label, history->error));
-        return;
-    }
-    label->setText(tr("%1: %2 of %3 records, newest first")
-                       .arg(history->label)
-                       .arg(history->used())
-                       .arg(history->records.size()));
-    for (const AlarmHistory::Record& r : history->records) {
-        if (r.empty)
-            continue;
-        const int row = table->rowCount();
-        table->insertRow(row);
-        const QStringList cells{QString::number(r.index), codeText(r.code),
-                                r.entry ? r.entry->panel : QString(),
-                                r.entry ? r.entry->name : tr("unknown code"),
-                                r.entry ? clearedByText(r.entry->reset) : QString()};
-        for (int c = 0; c < ColumnCount; ++c) {
-            auto* item = new QTableWidgetItem(cells[c]);
-            item->setData(Qt::UserRole, r.index);
-            if (c == ColIndex)
-                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            item->setToolTip(cells[c]); // shortened in a narrow column
-            table->setItem(row, c, item);
-        }
-    }
-    table->resizeColumnsToContents();
-    table->horizontalHeader()->setSectionResizeMode(ColName, QHeaderView::Stretch);
-}
-
-void AlarmsPage::showDetail(int which)
-{
-    const QList<QTableWidgetItem*> selected = m_tables[which]->selectedItems();
-    if (selected.isEmpty())
-        return;
-    m_tables[1 - which]->clearSelection();
-    const int index = selected.first()->data(Qt::UserRole).toInt();
-    const AlarmHistory::History* history = historyOf(m_report, which);
-    if (!history)
-        return;
-    for (const AlarmHistory::Record& r : history->records) {
-        if (r.index != index)
-            continue;
-        if (!r.entry) {
-            m_detail->setText(tr("Record %1: code %2 is not in the %3 table.")
-                                  .arg(r.index)
-                                  .arg(codeText(r.code), history->label));
-            return;
-        }
-        QStringList lines{tr("%1 %2 (record %3)").arg(r.entry->panel, r.entry->name).arg(r.index)};
-        if (!r.entry->cause.isEmpty())
-            lines << tr("Cause: %1").arg(r.entry->cause);
-        if (!r.entry->remedy.isEmpty())
-            lines << tr("Remedy: %1").arg(r.entry->remedy);
-        if (!r.entry->resetText.isEmpty())
-            lines << tr("To clear: %1").arg(r.entry->resetText);
-        m_detail->setText(lines.join(QLatin1Char('\n')));
-        return;
-    }
-}
-
 void AlarmsPage::confirm(const QString& title, const QString& text, const QString& details,
                          const QString& action, void (AlarmsPage::*then)())
 {
@@ -420,9 +250,9 @@ void AlarmsPage::resetAlarm()
     QStringList details{tr("Writes: %1").arg(m_history->resetPlan().join(QStringLiteral(", "))),
                         tr("This clears the active alarm if its cause is gone. Some alarms are "
                            "cleared only by a power cycle; the result tells.")};
-    if (m_report.powerRestartOnly)
+    if (report().powerRestartOnly)
         details << tr("This drive is set to clear alarms by a power restart only (%1).")
-                       .arg(m_report.eraseMethod);
+                       .arg(report().eraseMethod);
     confirm(tr("Reset alarm"),
             tr("Send the alarm reset command to machine %1?").arg(DriveName::listed(m_session)),
             details.join(QStringLiteral("\n\n")), tr("Reset alarm"), &AlarmsPage::startReset);
@@ -451,7 +281,7 @@ void AlarmsPage::clearRecords()
     if (m_busy || !m_history || !m_history->canClear())
         return;
     QStringList erased;
-    for (const AlarmHistory::History& h : m_report.histories)
+    for (const AlarmHistory::History& h : report().histories)
         erased << (h.ok ? tr("%1 (%2 records)").arg(h.label).arg(h.used()) : h.label);
     if (erased.isEmpty())
         erased << tr("the alarm and warning records");

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/alarms/AlarmHistory.h"
+#include "ui/alarms/AlarmRecordsView.h"
 
 #include <QLabel>
 #include <QPointer>
@@ -18,10 +19,10 @@ class DriveStatusPoller;
 class MonitorHub;
 class StaleLook;
 
-// A drive's alarm and warning histories (newest first) with the cause and remedy of the
-// selected record, the communication error register decoded, and the commands Re-read, Reset
-// alarm and Clear records. Reset and clear ask for confirmation first; everything runs
-// asynchronously through AlarmHistory and ends with operationFinished().
+// A drive's Alarms page: its alarm and warning records as an AlarmRecordsView shows them, the
+// alarm state followed live, and the commands Re-read, Reset alarm and Clear records. Reset and
+// clear ask for confirmation first; everything runs asynchronously through AlarmHistory and
+// ends with operationFinished().
 class AlarmsPage : public QWidget
 {
     Q_OBJECT
@@ -31,7 +32,7 @@ public:
 
     DeviceSession* session() const { return m_session; }
     bool isBusy() const { return m_busy; }
-    const AlarmHistory::Report& report() const { return m_report; }
+    const AlarmHistory::Report& report() const { return m_records->report(); }
 
     // Follows the drive live: watches it through `hub` while the page is shown and reads the
     // records again when the drive's alarm state changes (raised, cleared, another code, a
@@ -41,7 +42,7 @@ public:
     // Reads the records and the error register again.
     void refresh();
     // The alarm state the page shows: whether an alarm is active and the newest record's code.
-    std::optional<bool> shownAlarmActive() const { return m_report.alarmActive; }
+    std::optional<bool> shownAlarmActive() const { return report().alarmActive; }
     std::optional<qint64> shownAlarmCode() const;
     // "Alarm state updated 0.4 s ago" / "last answer ..." below the status.
     QString ageText() const;
@@ -50,17 +51,13 @@ public:
     void resetAlarm();
     void clearRecords();
 
-    QTableWidget* alarmTable() const { return m_tables[0]; }
-    QTableWidget* warningTable() const { return m_tables[1]; }
+    QTableWidget* alarmTable() const { return m_records->table(0); }
+    QTableWidget* warningTable() const { return m_records->table(1); }
     // Cause and remedy of the selected record; the communication error register decoded; the
     // last command's result and what the drive says.
-    QString detailText() const { return m_detail->text(); }
-    QString commErrorText() const { return m_commError->text(); }
+    QString detailText() const { return m_records->detailText(); }
+    QString commErrorText() const { return m_records->commErrorText(); }
     QString statusText() const { return m_status->text(); }
-
-    // "07h"; "Alarm-Reset", "power cycle", "by itself" for a code table's reset kind.
-    static QString codeText(qint64 code);
-    static QString clearedByText(const QString& reset);
 
 signals:
     void operationFinished();
@@ -73,9 +70,6 @@ private:
     // Whether a drive's alarm state differs from what the page shows.
     bool contradicts(std::optional<bool> active, std::optional<qint64> code) const;
     void setBusy(bool busy, const QString& status = QString());
-    void showReport(const AlarmHistory::Report& report);
-    void fillTable(int which, const AlarmHistory::History* history);
-    void showDetail(int which);
     void startReset();
     void startClear();
     void finish(const QString& status);
@@ -90,15 +84,11 @@ private:
 
     DeviceSession* m_session;
     QPointer<AlarmHistory> m_history;
-    AlarmHistory::Report m_report;
     QString m_commandResult;
     bool m_busy = false;
     QLabel* m_title;
     QLabel* m_status;
-    QLabel* m_tableLabels[2];
-    QTableWidget* m_tables[2];
-    QLabel* m_detail;
-    QLabel* m_commError;
+    AlarmRecordsView* m_records;
     QPushButton* m_reread;
     QPushButton* m_reset;
     QPushButton* m_clear;

@@ -3,7 +3,6 @@
 #include "ui/eol/VerdictLook.h"
 
 #include "model/access/StationAccess.h"
-#include "model/profile/ProfileRegistry.h"
 #include "model/station/EolStation.h"
 #include "ui/eol/EolSpeedChart.h"
 #include "ui/eol/IdentityDialog.h"
@@ -11,13 +10,9 @@
 #include "ui/eol/StationFigures.h"
 #include "ui/eol/StationLogin.h"
 
-#include <QApplication>
-#include <QDateTime>
 #include <QFileDialog>
-#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -59,7 +54,6 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     : QWidget(parent)
     , m_station(station)
     , m_client(std::move(client))
-    , m_traffic(traffic)
 {
     setObjectName(QStringLiteral("productionView"));
     // The station: recipe, per-unit values, results database, operator.
@@ -67,14 +61,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     auto* openRecipe = new QPushButton(tr("Open recipe…"), this);
     auto* openValues = new QPushButton(tr("Per-unit values…"), this);
     m_database = new QLabel(this);
-    // Results kept on the station while the results server does not answer, and units a
-    // station process that is gone left unfinished: amber, until the line is clear again.
-    m_notice = new QLabel(this);
-    m_notice->setObjectName(QStringLiteral("stationNotice"));
-    m_notice->setWordWrap(true);
-    m_notice->setStyleSheet(QStringLiteral(
-        "QLabel { background: #ffe08a; color: black; padding: 4px; border-radius: 4px; }"));
-    m_notice->hide();
+    m_notice = new StationNotice(station, this);
     m_login = new StationLogin(station, this);
     auto* top = new QHBoxLayout;
     top->addWidget(new QLabel(tr("Recipe:"), this));
@@ -84,23 +71,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     top->addSpacing(12);
     top->addWidget(m_login);
 
-    m_serial = new QLineEdit(this);
-    m_serial->setObjectName(QStringLiteral("serialField"));
-    m_serial->setFont(scaled(font(), 2.2));
-    m_serial->setPlaceholderText(tr("Scan or type the serial number, then Enter"));
-    m_cancel = new QPushButton(tr("Cancel unit (Esc)"), this);
-    m_cancel->setFont(scaled(font(), 1.4, true));
-    m_cancel->setEnabled(false);
-    auto* serialRow = new QHBoxLayout;
-    serialRow->addWidget(m_serial, 1);
-    serialRow->addWidget(m_cancel);
-    // A barcode scanned while a unit runs is refused where the operator looks, never dropped.
-    m_scanNote = new QLabel(this);
-    m_scanNote->setObjectName(QStringLiteral("scanNote"));
-    m_scanNote->setWordWrap(true);
-    m_scanNote->setFont(scaled(font(), 1.3, true));
-    m_scanNote->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; }"));
-    m_scanNote->hide();
+    m_entry = new SerialEntry(station, m_client, traffic, this);
 
     m_verdict = new QLabel(this);
     m_verdict->setObjectName(QStringLiteral("verdictLabel"));
@@ -120,7 +91,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     middle->addWidget(m_chart);
     middle->setStretchFactor(1, 2);
 
-    m_units = table({tr("Time"), tr("Serial"), tr("Verdict"), tr("Reason")}, this);
+    m_units = new UnitLog(this);
     m_counters = new StationFigures(m_station, this);
     m_counters->setFont(scaled(font(), 1.3, true));
 
@@ -129,8 +100,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     layout->addWidget(m_database);
     layout->addWidget(m_login->notice());
     layout->addWidget(m_notice);
-    layout->addLayout(serialRow);
-    layout->addWidget(m_scanNote);
+    layout->addWidget(m_entry);
     layout->addWidget(m_verdict);
     layout->addWidget(m_reason);
     m_actions = new StationActions(
@@ -142,8 +112,14 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
 
     connect(openRecipe, &QPushButton::clicked, this, &ProductionView::chooseRecipe);
     connect(openValues, &QPushButton::clicked, this, &ProductionView::chooseUnitValues);
-    connect(m_serial, &QLineEdit::returnPressed, this, &ProductionView::startUnit);
-    connect(m_cancel, &QPushButton::clicked, this, [this] { m_station->cancel(); });
+    connect(m_entry, &SerialEntry::notStarted, this, [this](const QString& why) {
+        showVerdict(VerdictLook::State::NotStarted, why);
+        focusSerial();
+    });
+    connect(m_entry, &SerialEntry::waitingForSafety, this, [this](const QString& serial) {
+        showVerdict(VerdictLook::State::Testing,
+                    tr("Unit %1: making the station's drives safe first…").arg(serial));
+    });
     auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
     escape->setContext(Qt::WidgetWithChildrenShortcut);
     connect(escape, &QShortcut::activated, this, [this] {
@@ -168,19 +144,16 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     connect(m_station, &EolStation::unsavedResultChanged, this,
             &ProductionView::unsavedResultChanged);
     connect(m_station, &EolStation::databaseOpened, this, [this] { refresh(); });
-    connect(m_station, &EolStation::resultsWaitingChanged, this, [this] { refreshNotice(); });
-    connect(m_station, &EolStation::interruptedFound, this, [this] { refreshNotice(); });
-    connect(m_station, &EolStation::safetyChanged, this, [this] { refreshNotice(); });
     connect(m_station, &EolStation::startRefused, this, [this](const QString&, const QString& why) {
         showVerdict(VerdictLook::State::NotStarted, why);
-        m_cancel->setEnabled(false);
+        m_entry->cancelButton()->setEnabled(false);
         refreshRecipe();
         focusSerial();
     });
     connect(m_station, &EolStation::retestNeedsTechnician, this,
             [this](const QString&, const QString& why) {
                 showVerdict(VerdictLook::State::NotStarted, why);
-                m_cancel->setEnabled(false);
+                m_entry->cancelButton()->setEnabled(false);
                 focusSerial();
             });
     connect(m_station, &EolStation::recording, this, [this](const QString& what) {
@@ -193,7 +166,6 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     showVerdict(VerdictLook::State::Ready, QString());
     refreshRecipe();
     refreshCounters();
-    refreshNotice();
 }
 
 void ProductionView::refresh()
@@ -214,8 +186,8 @@ void ProductionView::focusSerial()
         m_login->focusUser();
         return;
     }
-    m_serial->setFocus();
-    m_serial->selectAll();
+    m_entry->field()->setFocus();
+    m_entry->field()->selectAll();
 }
 
 bool ProductionView::openRecipe(const QString& path)
@@ -277,7 +249,7 @@ void ProductionView::refreshRecipe()
     m_database->setText(tr("Station %1 · results: %2 · per-unit values: %3")
                             .arg(m_station->station(), m_station->databaseText(),
                                  m_station->hasUnitValues() ? tr("loaded") : tr("none")));
-    m_serial->setEnabled(m_station->hasRecipe() && !m_station->hasUnsavedResult());
+    m_entry->field()->setEnabled(m_station->hasRecipe() && !m_station->hasUnsavedResult());
 }
 
 QLabel* ProductionView::countersLabel() const
@@ -297,57 +269,6 @@ void ProductionView::showVerdict(VerdictLook::State state, const QString& reason
         QStringLiteral("QLabel { background: %1; color: white; border-radius: 6px; }")
             .arg(VerdictLook::colour(state)));
     m_reason->setText(reason);
-}
-
-void ProductionView::startUnit()
-{
-    const QString serial = m_serial->text().trimmed();
-    if (serial.isEmpty())
-        return;
-    if (m_station->isRunning() || m_station->isStarting()) {
-        const QString current = m_station->isRunning() ? m_station->run()->record().serial
-                                                       : m_station->startingSerial();
-        QApplication::beep();
-        m_scanNote->setText(tr("Serial %1 was NOT taken: unit %2 is being tested. Scan it again "
-                               "once its verdict shows.")
-                                .arg(serial, current.isEmpty() ? tr("another") : current));
-        m_scanNote->show();
-        m_serial->clear();
-        return;
-    }
-    // Values the recipe leaves to the operator, each within its range.
-    QHash<int, QHash<QString, double>> typed;
-    const Profile* profile = nullptr;
-    for (const auto& [machineNumber, value] : m_station->operatorValues()) {
-        for (const RecipePosition& p : m_station->recipe().positions)
-            if (p.machineNumber == machineNumber)
-                profile = ProfileRegistry::builtIn().family(p.family);
-        const ParameterMeta* meta = profile ? profile->parameter(value.name) : nullptr;
-        bool ok = false;
-        const double v = QInputDialog::getDouble(this, tr("Per-unit value"),
-                                                 tr("Drive %1: %2 (%3–%4 %5)")
-                                                     .arg(machineNumber)
-                                                     .arg(meta ? meta->label : value.name)
-                                                     .arg(value.min)
-                                                     .arg(value.max)
-                                                     .arg(value.unit),
-                                                 value.min, value.min, value.max, 3, &ok);
-        if (!ok)
-            return;
-        typed[machineNumber][value.name] = v;
-    }
-    QString error;
-    if (!m_station->start(m_client(), m_traffic, serial, typed, &error)) {
-        showVerdict(VerdictLook::State::NotStarted, error);
-        focusSerial();
-        return;
-    }
-    if (!m_station->isRunning()) { // it starts once the station's drives are safe
-        showVerdict(VerdictLook::State::Testing,
-                    tr("Unit %1: making the station's drives safe first…").arg(serial));
-        m_serial->clear();
-        m_cancel->setEnabled(true);
-    }
 }
 
 void ProductionView::unitStarted(const QString& serial)
@@ -370,9 +291,7 @@ void ProductionView::unitStarted(const QString& serial)
     showVerdict(VerdictLook::State::Testing,
                 attempt > 1 ? tr("Unit %1 — attempt %2").arg(serial).arg(attempt)
                             : tr("Unit %1").arg(serial));
-    m_cancel->setEnabled(true);
-    m_scanNote->hide();
-    m_serial->clear(); // stays open: a serial scanned now is refused aloud (startUnit)
+    m_entry->unitStarted();
 }
 
 void ProductionView::phaseChanged(int machineNumber, int, const QString& text)
@@ -384,7 +303,7 @@ void ProductionView::phaseChanged(int machineNumber, int, const QString& text)
 
 void ProductionView::unitFinished(const UnitRecord& record)
 {
-    m_cancel->setEnabled(false);
+    m_entry->cancelButton()->setEnabled(false);
     QString reason = record.failureReason;
     if (m_station->hasUnsavedResult()) {
         // Never a verdict the database does not hold: red, and nothing else is tested.
@@ -402,21 +321,12 @@ void ProductionView::unitFinished(const UnitRecord& record)
                               tr("These motors may still be turning; stop them before touching "
                                  "the unit:\n\n%1")
                                   .arg(m_station->unconfirmedStops().join(QLatin1Char('\n'))));
-    m_units->insertRow(0);
-    QString verdict = unitStatusName(record.status).toUpper();
-    if (m_station->hasUnsavedResult())
-        verdict = tr("%1, NOT RECORDED").arg(verdict);
-    else if (m_station->lastResultSpooled())
-        verdict = tr("%1 (kept on this station)").arg(verdict);
-    const QStringList cells{record.ended.toLocalTime().toString(QStringLiteral("HH:mm:ss")),
-                            record.serial, verdict, record.failureReason};
-    for (int c = 0; c < cells.size(); ++c)
-        m_units->setItem(0, c, new QTableWidgetItem(cells[c]));
-    if (m_units->rowCount() > 50)
-        m_units->removeRow(m_units->rowCount() - 1);
+    m_units->add(record, m_station->hasUnsavedResult()    ? UnitLog::Kept::NotRecorded
+                         : m_station->lastResultSpooled() ? UnitLog::Kept::OnStation
+                                                          : UnitLog::Kept::Recorded);
     refreshCounters();
     refreshRecipe();
-    m_serial->clear();
+    m_entry->field()->clear();
     focusSerial();
 }
 
@@ -433,7 +343,7 @@ void ProductionView::showNotRecorded()
                      .addSecs(m_station->nextRetrySeconds())
                      .toString(QStringLiteral("HH:mm:ss"))));
     refreshCounters();
-    m_serial->setEnabled(false);
+    m_entry->field()->setEnabled(false);
 }
 
 void ProductionView::unsavedResultChanged(bool recorded)
@@ -444,8 +354,7 @@ void ProductionView::unsavedResultChanged(bool recorded)
     }
     const UnitRecord unit =
         m_station->lastUnits().isEmpty() ? UnitRecord() : m_station->lastUnits().first();
-    if (m_units->rowCount() > 0 && m_units->item(0, 2))
-        m_units->item(0, 2)->setText(unitStatusName(unit.status).toUpper());
+    m_units->markRecorded(unit.status);
     showVerdictOf(unit, tr("%1\nRecorded at %2, after the results database came back.")
                             .arg(unit.failureReason.isEmpty() ? tr("Unit %1").arg(unit.serial)
                                                               : unit.failureReason,
@@ -458,34 +367,6 @@ void ProductionView::unsavedResultChanged(bool recorded)
 void ProductionView::showVerdictOf(const UnitRecord& record, const QString& reason)
 {
     showVerdict(VerdictLook::of(record.status), VerdictLook::reason(record, reason));
-}
-
-void ProductionView::refreshNotice()
-{
-    QStringList lines;
-    const int waiting = m_station->resultsWaiting();
-    if (waiting > 0)
-        lines << tr("%n result(s) kept on this station, not yet in the results database: %1. "
-                    "They are sent by themselves, in order, when it answers.",
-                    nullptr, waiting)
-                     .arg(m_station->resultsWaitingError().isEmpty()
-                              ? tr("it does not answer")
-                              : m_station->resultsWaitingError());
-    for (const StationLease::Leftover& unit : m_station->interruptedUnits())
-        lines << tr("Unit %1 (begun %2) was not finished: the station stopped during its test. "
-                    "It is recorded as interrupted; test it again.")
-                     .arg(unit.serial, QDateTime::fromString(unit.started, Qt::ISODateWithMs)
-                                           .toLocalTime()
-                                           .toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
-    if (m_station->isMakingSafe())
-        lines << tr("Making the recipe's drives safe: reading each, stopping one left running, "
-                    "giving control back to their inputs…");
-    else
-        for (const PositionSafety& p : m_station->safety())
-            if (p.worthSaying())
-                lines << p.summary();
-    m_notice->setText(lines.join(QLatin1Char('\n')));
-    m_notice->setVisible(!lines.isEmpty());
 }
 
 } // namespace opentop

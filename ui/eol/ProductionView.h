@@ -1,6 +1,9 @@
 #pragma once
 
 #include "model/eol/UnitRecord.h"
+#include "ui/eol/SerialEntry.h"
+#include "ui/eol/StationNotice.h"
+#include "ui/eol/UnitLog.h"
 #include "ui/eol/VerdictLook.h"
 
 #include <QElapsedTimer>
@@ -33,18 +36,18 @@ public:
     ProductionView(EolStation* station, std::function<ModbusClient*()> client, TrafficLog* traffic,
                    QWidget* parent = nullptr);
 
-    QLineEdit* serialField() const { return m_serial; }
+    QLineEdit* serialField() const { return m_entry->field(); }
     QLabel* verdictLabel() const { return m_verdict; }
     QLabel* reasonLabel() const { return m_reason; }
     QLabel* countersLabel() const;
     QLabel* databaseLabel() const { return m_database; }
     QLabel* noticeLabel() const { return m_notice; }
-    QLabel* scanNoteLabel() const { return m_scanNote; }
+    QLabel* scanNoteLabel() const { return m_entry->scanNote(); }
     StationActions* actions() const { return m_actions; }
     StationLogin* login() const { return m_login; }
     // The station makes the recipe's drives safe on the bus the window is connected to.
     void makeSafe();
-    QPushButton* cancelButton() const { return m_cancel; }
+    QPushButton* cancelButton() const { return m_entry->cancelButton(); }
     QTableWidget* drivesTable() const { return m_drives; }
     QTableWidget* unitsTable() const { return m_units; }
     EolSpeedChart* chart() const { return m_chart; }
@@ -63,33 +66,28 @@ protected:
 private:
     void chooseRecipe();
     void chooseUnitValues();
-    void startUnit();
     void showVerdict(VerdictLook::State state, const QString& reason);
     void unitStarted(const QString& serial);
     void phaseChanged(int machineNumber, int phase, const QString& text);
     void unitFinished(const UnitRecord& record);
     void unsavedResultChanged(bool recorded);
     void showNotRecorded();
-    void refreshNotice();
     void showVerdictOf(const UnitRecord& record, const QString& reason);
     void refreshRecipe();
     void refreshCounters();
 
     EolStation* m_station;
     std::function<ModbusClient*()> m_client;
-    TrafficLog* m_traffic;
     QLabel* m_recipe;
     QLabel* m_database;
-    QLabel* m_notice;
-    QLabel* m_scanNote;
+    StationNotice* m_notice;
     StationLogin* m_login;
-    QLineEdit* m_serial;
-    QPushButton* m_cancel;
+    SerialEntry* m_entry;
     QTableWidget* m_drives;
     EolSpeedChart* m_chart;
     QLabel* m_verdict;
     QLabel* m_reason;
-    QTableWidget* m_units;
+    UnitLog* m_units;
     StationFigures* m_counters;
     StationActions* m_actions = nullptr;
     QElapsedTimer m_clock;

@@ -1,13 +1,9 @@
 #include "ui/eol/RecipeEditor.h"
 
-#include "model/bus/BusDrives.h"
 #include "model/eol/Recipe.h"
-#include "model/eol/RecipeBuilder.h"
 #include "model/eol/RecipeFile.h"
-#include "model/eol/RecipeFromDrives.h"
-#include "model/files/BackupFile.h"
 #include "model/profile/ProfileRegistry.h"
-#include "model/session/DeviceSession.h"
+#include "ui/eol/GoldenRecipeSource.h"
 #include "ui/eol/RecipePositionForm.h"
 #include "ui/widgets/ClearOfStopAll.h"
 
@@ -18,20 +14,16 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QInputDialog>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
-#include <QPointer>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSplitter>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <memory>
 
 namespace opentop {
 
@@ -43,7 +35,7 @@ const QString kPositions = QStringLiteral("positions");
 
 RecipeEditor::RecipeEditor(std::function<BusDrives*()> drives, QWidget* parent)
     : QDialog(parent)
-    , m_drives(std::move(drives))
+    , m_golden(new GoldenRecipeSource(std::move(drives), this))
 {
     setWindowTitle(tr("Recipe editor"));
     setObjectName(QStringLiteral("recipeEditor"));
@@ -97,6 +89,11 @@ RecipeEditor::RecipeEditor(std::function<BusDrives*()> drives, QWidget* parent)
     for (QLineEdit* e : {m_product, m_revision, m_description})
         connect(e, &QLineEdit::textEdited, this, &RecipeEditor::scheduleCheck);
     connect(m_checkTimer, &QTimer::timeout, this, [this] { check(); });
+    connect(m_golden, &GoldenRecipeSource::made, this, [this](const QJsonObject& document) {
+        m_path.clear(); // a new recipe: Save asks where
+        setDocument(document);
+    });
+    connect(m_golden, &GoldenRecipeSource::said, this, &RecipeEditor::say);
     connect(m_problems, &QListWidget::itemActivated, this,
             [this](QListWidgetItem* item) { showProblem(item->data(Qt::UserRole).toString()); });
     resize(1000, 720);
@@ -117,8 +114,10 @@ QWidget* RecipeEditor::makeToolbar()
     for (QPushButton* b : {fromDrives, fromBackup, open, m_save, saveAs})
         m_bar->addWidget(b);
     m_bar->addStretch(1);
-    connect(fromDrives, &QPushButton::clicked, this, &RecipeEditor::chooseDrives);
-    connect(fromBackup, &QPushButton::clicked, this, &RecipeEditor::chooseBackup);
+    connect(fromDrives, &QPushButton::clicked, this,
+            [this] { m_golden->chooseDrives(m_product->text()); });
+    connect(fromBackup, &QPushButton::clicked, this,
+            [this] { m_golden->chooseBackup(m_product->text()); });
     connect(open, &QPushButton::clicked, this, &RecipeEditor::chooseOpen);
     connect(m_save, &QPushButton::clicked, this, [this] { chooseSave(false); });
     connect(saveAs, &QPushButton::clicked, this, [this] { chooseSave(true); });
@@ -311,69 +310,13 @@ bool RecipeEditor::openFile(const QString& path, QString* error)
 bool RecipeEditor::newFromBackup(const QString& backupPath, const QString& product,
                                  const QString& revision, QString* error)
 {
-    const std::optional<BackupFile> backup =
-        BackupFile::load(backupPath, ProfileRegistry::builtIn(), error);
-    if (!backup)
-        return false;
-    const std::optional<Recipe> recipe =
-        RecipeBuilder(ProfileRegistry::builtIn()).fromBackup(*backup, product, revision, error);
-    if (!recipe)
-        return false;
-    m_path.clear();
-    setDocument(RecipeFile::toObject(*recipe));
-    say(tr("New recipe from %1: check the settings and the test steps' limits, then save it.")
-            .arg(backupPath),
-        false);
-    return true;
+    return m_golden->fromBackup(backupPath, product, revision, error);
 }
 
 void RecipeEditor::newFromDrives(const QVector<int>& ids, const QString& product,
                                  const QString& revision, std::function<void(bool, QString)> done)
 {
-    BusDrives* drives = m_drives ? m_drives() : nullptr;
-    QVector<RecipeFromDrives::Golden> golden;
-    for (int id : ids) {
-        DeviceSession* session = drives ? drives->session(id) : nullptr;
-        if (!session) {
-            done(false, tr("machine number %1 is not a known drive on the bus; scan the bus first")
-                            .arg(id));
-            return;
-        }
-        // A variant the person chose for a drive that does not report it counts as stated.
-        const QString reported =
-            RecipeFromDrives::reportedVariant(session->profile(), drives->info(id));
-        golden.append({id, reported, reported.isEmpty() ? session->variant() : QString()});
-    }
-    auto* progress = new QProgressDialog(tr("Reading the golden unit's settings…"), tr("Cancel"), 0,
-                                         int(ids.size()), this);
-    progress->setWindowModality(Qt::WindowModal);
-    progress->setMinimumDuration(0);
-    auto* make = new RecipeFromDrives(
-        drives->client(), ProfileRegistry::builtIn(),
-        [drives = QPointer<BusDrives>(drives)](int slave, QString* error) -> DeviceSession* {
-            DeviceSession* session = drives ? drives->session(slave) : nullptr;
-            if (!session)
-                *error = tr("machine number %1 is not on the bus").arg(slave);
-            return session;
-        },
-        this);
-    connect(make, &RecipeFromDrives::driveStarted, progress,
-            [progress](int, int index, int) { progress->setValue(index); });
-    connect(progress, &QProgressDialog::canceled, make, &RecipeFromDrives::cancel);
-    make->start(golden, product, revision, qEnvironmentVariable("USER"),
-                [this, make, progress, done](const RecipeFromDrives::Result& r) {
-                    make->deleteLater();
-                    progress->deleteLater();
-                    if (!r.recipe) {
-                        done(false, r.failure == RecipeFromDrives::Failure::Cancelled
-                                        ? tr("cancelled: no recipe was made")
-                                        : r.problems.join(QStringLiteral("; ")));
-                        return;
-                    }
-                    m_path.clear();
-                    setDocument(RecipeFile::toObject(*r.recipe));
-                    done(true, QString());
-                });
+    m_golden->fromDrives(ids, product, revision, std::move(done));
 }
 
 void RecipeEditor::chooseOpen()
@@ -383,70 +326,6 @@ void RecipeEditor::chooseOpen()
     QString error;
     if (!path.isEmpty() && !openFile(path, &error))
         say(error, true);
-}
-
-bool RecipeEditor::askProductAndRevision(QString* product, QString* revision)
-{
-    bool ok = false;
-    *product = QInputDialog::getText(this, tr("New recipe"), tr("Product name:"), QLineEdit::Normal,
-                                     m_product->text(), &ok)
-                   .trimmed();
-    if (!ok || product->isEmpty())
-        return false;
-    *revision = QInputDialog::getText(this, tr("New recipe"), tr("Revision:"), QLineEdit::Normal,
-                                      QStringLiteral("A"), &ok)
-                    .trimmed();
-    return ok && !revision->isEmpty();
-}
-
-void RecipeEditor::chooseBackup()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Golden unit's backup file"),
-                                                      QString(), tr("Backups (*.json)"));
-    QString product, revision, error;
-    if (path.isEmpty() || !askProductAndRevision(&product, &revision))
-        return;
-    if (!newFromBackup(path, product, revision, &error))
-        say(error, true);
-}
-
-void RecipeEditor::chooseDrives()
-{
-    BusDrives* drives = m_drives ? m_drives() : nullptr;
-    if (!drives || drives->slaves().isEmpty()) {
-        say(tr("No drives on the bus: connect and scan first."), true);
-        return;
-    }
-    QStringList numbers;
-    for (int s : drives->slaves())
-        numbers << QString::number(s);
-    bool ok = false;
-    const QString text =
-        QInputDialog::getText(this, tr("New recipe from drives"),
-                              tr("Machine numbers of the golden unit's drives (found: %1):")
-                                  .arg(numbers.join(QStringLiteral(", "))),
-                              QLineEdit::Normal, numbers.join(QLatin1Char(',')), &ok);
-    if (!ok)
-        return;
-    QVector<int> ids;
-    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-        bool isNumber = false;
-        const int id = part.trimmed().toInt(&isNumber);
-        if (!isNumber || id < 1 || id > 247) {
-            say(tr("\"%1\" is not a machine number (1–247)").arg(part.trimmed()), true);
-            return;
-        }
-        ids << id;
-    }
-    QString product, revision;
-    if (ids.isEmpty() || !askProductAndRevision(&product, &revision))
-        return;
-    newFromDrives(ids, product, revision, [this](bool done, const QString& error) {
-        say(done ? tr("New recipe from the drives on the bus: check the settings and the test "
-                      "steps' limits, then save it.")
-                 : error,
-            !done);
-    });
 }
 
 void RecipeEditor::chooseSave(bool askPath)

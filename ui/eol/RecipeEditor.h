@@ -17,6 +17,7 @@ class QTimer;
 namespace opentop {
 
 class BusDrives;
+class GoldenRecipeSource;
 class RecipePositionForm;
 
 // The engineers' recipe editor (docs/recipe-format.md): a recipe made from a golden unit's
@@ -61,13 +62,10 @@ private:
     void scheduleCheck();
     void showProblem(const QString& path);
     void chooseOpen();
-    void chooseBackup();
-    void chooseDrives();
     void chooseSave(bool askPath);
-    bool askProductAndRevision(QString* product, QString* revision);
     void say(const QString& text, bool error);
 
-    std::function<BusDrives*()> m_drives;
+    GoldenRecipeSource* m_golden;
     QJsonObject m_document;
     int m_current = -1; // the position the form shows
     QString m_path;

@@ -8,17 +8,14 @@
 #include "model/eol/ResultWriter.h"
 #include "model/eol/YieldReport.h"
 #include "report/CertificatePdf.h"
+#include "ui/eol/ResultsFilterBar.h"
 #include "ui/widgets/ClearOfStopAll.h"
 
-#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
-#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineEdit>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
@@ -89,14 +86,17 @@ ResultsBrowser::ResultsBrowser(const QString& url, QWidget* parent)
     buttons->addButton(m_csv, QDialogButtonBox::ActionRole);
     buttons->addButton(m_certificate, QDialogButtonBox::ActionRole);
 
+    m_filters = new ResultsFilterBar(this);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(makeFilters());
+    layout->addWidget(m_filters);
     layout->addWidget(m_message);
     layout->addWidget(m_summary);
     layout->addWidget(split, 1);
     layout->addWidget(buttons);
 
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(m_filters, &ResultsFilterBar::openAsked, this, &ResultsBrowser::openDatabase);
+    connect(m_filters, &ResultsFilterBar::searchAsked, this, &ResultsBrowser::search);
     connect(m_csv, &QPushButton::clicked, this, &ResultsBrowser::chooseCsv);
     connect(m_certificate, &QPushButton::clicked, this, &ResultsBrowser::chooseCertificate);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &ResultsBrowser::showSelected);
@@ -108,71 +108,11 @@ ResultsBrowser::ResultsBrowser(const QString& url, QWidget* parent)
         text = qEnvironmentVariable("OPENTOP_EOL_DB");
     if (text.trimmed().isEmpty())
         text = ResultUrl::defaultLocation();
-    m_url->setText(text);
+    m_filters->setUrl(text);
     openDatabase(text);
 }
 
 ResultsBrowser::~ResultsBrowser() = default;
-
-QWidget* ResultsBrowser::makeFilters()
-{
-    auto* box = new QWidget(this);
-    m_url = new QLineEdit(box);
-    m_url->setPlaceholderText(tr("SQLite file or postgresql://user@host/database"));
-    auto* open = new QPushButton(tr("Open"), box);
-    auto* browse = new QPushButton(tr("File…"), box);
-    auto* urlRow = new QHBoxLayout;
-    urlRow->addWidget(m_url, 1);
-    urlRow->addWidget(open);
-    urlRow->addWidget(browse);
-
-    m_serial = new QLineEdit(box);
-    m_serial->setPlaceholderText(tr("any; * and ? as wildcards (SN-10*)"));
-    m_recipe = new QLineEdit(box);
-    m_recipe->setPlaceholderText(tr("any"));
-    m_station = new QLineEdit(box);
-    m_station->setPlaceholderText(tr("any"));
-    m_period = new QComboBox(box);
-    m_period->addItem(tr("Today"), 0);
-    m_period->addItem(tr("Last 24 hours"), 1);
-    m_period->addItem(tr("Last 7 days"), 7);
-    m_period->addItem(tr("Last 30 days"), 30);
-    m_period->addItem(tr("All"), -1);
-    m_period->setCurrentIndex(2);
-    m_verdict = new QComboBox(box);
-    m_verdict->addItem(tr("Any"), QString());
-    for (UnitStatus s : {UnitStatus::Pass, UnitStatus::Fail, UnitStatus::Error, UnitStatus::Aborted,
-                         UnitStatus::Interrupted, UnitStatus::Running})
-        m_verdict->addItem(CertificateHtml::verdictText(s), unitStatusName(s));
-    auto* find = new QPushButton(tr("Search"), box);
-    find->setDefault(true);
-
-    auto* filters = new QHBoxLayout;
-    for (auto [label, widget] : {std::pair<QString, QWidget*>{tr("Serial:"), m_serial},
-                                 {tr("Recipe:"), m_recipe},
-                                 {tr("Station:"), m_station},
-                                 {tr("Period:"), m_period},
-                                 {tr("Verdict:"), m_verdict}}) {
-        filters->addWidget(new QLabel(label, box));
-        filters->addWidget(widget, qobject_cast<QLineEdit*>(widget) ? 1 : 0);
-    }
-    filters->addWidget(find);
-
-    auto* layout = new QFormLayout(box);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addRow(tr("Database:"), urlRow);
-    layout->addRow(filters);
-
-    connect(open, &QPushButton::clicked, this, [this] { openDatabase(m_url->text()); });
-    connect(m_url, &QLineEdit::returnPressed, open, &QPushButton::click);
-    connect(browse, &QPushButton::clicked, this, &ResultsBrowser::chooseDatabase);
-    connect(find, &QPushButton::clicked, this, &ResultsBrowser::search);
-    for (QLineEdit* e : {m_serial, m_recipe, m_station})
-        connect(e, &QLineEdit::returnPressed, this, &ResultsBrowser::search);
-    connect(m_period, &QComboBox::activated, this, &ResultsBrowser::search);
-    connect(m_verdict, &QComboBox::activated, this, &ResultsBrowser::search);
-    return box;
-}
 
 bool ResultsBrowser::openDatabase(const QString& text)
 {
@@ -232,17 +172,7 @@ bool ResultsBrowser::search()
         m_summary->clear();
         return false;
     }
-    ResultFilter filter;
-    filter.serial = m_serial->text().trimmed();
-    filter.recipe = m_recipe->text().trimmed();
-    filter.station = m_station->text().trimmed();
-    filter.status = unitStatusFromName(m_verdict->currentData().toString());
-    const int days = m_period->currentData().toInt();
-    const QDateTime now = QDateTime::currentDateTime();
-    if (days == 0)
-        filter.from = now.date().startOfDay().toUTC();
-    else if (days > 0)
-        filter.from = now.addDays(-days).toUTC();
+    const ResultFilter filter = m_filters->filter();
     m_summary->setText(tr("Searching…"));
     struct Found
     {
@@ -374,17 +304,6 @@ bool ResultsBrowser::saveCertificate(const QString& path, QString* error)
         return false;
     }
     return CertificatePdf::save(*m_selected, path, error, m_selectedEarlier);
-}
-
-void ResultsBrowser::chooseDatabase()
-{
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open results database"), QFileInfo(m_url->text()).absolutePath(),
-        tr("SQLite databases (*.db *.sqlite);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    m_url->setText(path);
-    openDatabase(path);
 }
 
 void ResultsBrowser::chooseCsv()

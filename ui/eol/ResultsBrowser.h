@@ -2,6 +2,7 @@
 
 #include "model/eol/UnitRecord.h"
 #include "model/eol/YieldReport.h"
+#include "ui/eol/ResultsFilterBar.h"
 
 #include <QDialog>
 #include <QVector>
@@ -46,9 +47,9 @@ public:
     // still being read, or on an error.
     bool saveCertificate(const QString& path, QString* error);
 
-    QLineEdit* serialFilter() const { return m_serial; }
-    QComboBox* verdictFilter() const { return m_verdict; }
-    QComboBox* periodFilter() const { return m_period; }
+    QLineEdit* serialFilter() const { return m_filters->serialFilter(); }
+    QComboBox* verdictFilter() const { return m_filters->verdictFilter(); }
+    QComboBox* periodFilter() const { return m_filters->periodFilter(); }
     QTableWidget* table() const { return m_table; }
     QTextBrowser* details() const { return m_details; }
 
@@ -59,10 +60,8 @@ signals:
     void detailsShown();
 
 private:
-    QWidget* makeFilters();
     void showFound(const YieldReport::Tables& tables);
     void showSelected();
-    void chooseDatabase();
     void chooseCsv();
     void chooseCertificate();
     void say(const QString& text, bool error);
@@ -74,12 +73,7 @@ private:
     std::optional<UnitRecord> m_selected;  // the selected unit's whole record, once read
     QVector<UnitRecord> m_selectedEarlier; // its serial's records before it
     YieldRow m_yield;                      // the period's, over every recipe found
-    QLineEdit* m_url = nullptr;
-    QLineEdit* m_serial = nullptr;
-    QLineEdit* m_recipe = nullptr;
-    QLineEdit* m_station = nullptr;
-    QComboBox* m_verdict = nullptr;
-    QComboBox* m_period = nullptr;
+    ResultsFilterBar* m_filters = nullptr;
     QLabel* m_summary = nullptr;
     QLabel* m_message = nullptr;
     QTableWidget* m_table = nullptr;

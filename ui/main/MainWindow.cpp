@@ -4,16 +4,12 @@
 #include "model/bus/BusGroupTracker.h"
 #include "model/bus/DriveStatusPoller.h"
 #include "model/bus/FixedLineHint.h"
-#include "model/monitor/MonitorHub.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/session/DeviceIdentifier.h"
-#include "model/session/DeviceParameters.h"
 #include "model/station/EolStation.h"
 #include "model/traffic/TrafficDescriber.h"
 #include "transport/ModbusClient.h"
 #include "transport/TrafficLog.h"
-#include "ui/alarms/AlarmBanner.h"
-#include "ui/alarms/AlarmsPage.h"
 #include "ui/bus/BusPanel.h"
 #include "ui/bus/BusRecallBar.h"
 #include "ui/connection/ConnectionDialog.h"
@@ -22,8 +18,6 @@
 #include "ui/main/LinkBar.h"
 #include "ui/main/MainMenus.h"
 #include "ui/main/Reconnection.h"
-#include "ui/run/ExitGuard.h"
-#include "ui/run/StopAllButton.h"
 #include "ui/run/StopAllKeys.h"
 #include "ui/run/TestRunPanel.h"
 #include "ui/workspace/DriveWorkspace.h"
@@ -36,7 +30,6 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTimer>
-#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace opentop {
@@ -45,12 +38,22 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     : QMainWindow(parent)
     , m_factory(std::move(factory))
     , m_log(std::make_unique<TrafficLog>())
+    , m_pending(
+          [this](std::unique_ptr<ModbusClient> client, const ConnectionSettings& settings,
+                 const QHash<int, QString>& knownTypes) {
+              adopt(std::move(client), settings, knownTypes);
+              onOpened(true, QString());
+          },
+          [this](const ConnectionSettings& failed, const QString& why) {
+              refuseConnection(failed, why);
+          })
     , m_workspace(new DriveWorkspace(this))
     , m_central(new QWidget(this))
     , m_splitter(new QSplitter(this))
     , m_status(new ConnectionStatus(this))
     , m_geometry(this, m_splitter)
     , m_reconnection(new Reconnection(this))
+    , m_leaving(new BusLeaving(this))
 {
     setWindowTitle(tr("OpenTOP"));
     m_splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -71,6 +74,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
         QTimer::singleShot(0, this, [this, settings] { connectTo(settings); });
     });
     m_pages = new DrivePages(this); // before the menus: they ask it for the selection
+    m_views = new ConnectionViews(this, m_central, m_splitter, m_docks, m_pages);
     m_menus = new MainMenus(
         this, m_docks, [this] { return m_pages->selected(); }, [this] { return m_settings; });
     connect(m_pages, &DrivePages::sameFamilySelected, m_menus->multiWriteAction(),
@@ -86,7 +90,7 @@ MainWindow::MainWindow(ClientFactory factory, QWidget* parent)
     m_menus->viewMenu()->addAction(m_production->stationNameAction());
     // STOP ALL's keys work everywhere in the program, modal dialogs included; the button itself
     // is made per connection.
-    new StopAllKeys([this] { return m_stopAll; }, this);
+    new StopAllKeys([this] { return m_views->stopAll(); }, this);
     m_geometry.restore();
 }
 
@@ -100,26 +104,9 @@ void MainWindow::teardown()
     m_reconnection->keepView(); // the drives, selection and page a reconnection brings back
     // The pages watch drives through the hub and use their sessions: gone before them.
     m_pages->clear();
-    delete m_recall; // before the drives: it remembers what is left of them
-    m_recall = nullptr;
-    m_docks->clear();
-    delete m_hub; // before the drives: its monitors use their sessions
-    m_hub = nullptr;
-    if (m_stopAllAction) {
-        m_menus->toolbar()->removeAction(m_stopAllAction);
-        m_stopAllAction = nullptr;
-    }
-    delete m_stopAll;
-    m_stopAll = nullptr;
-    if (m_exitGuard) {
-        m_exitGuard->deleteLater(); // its answer may be what brought us here
-        m_exitGuard = nullptr;
-    }
-    delete m_banner;
-    m_banner = nullptr;
+    m_views->clear();
+    m_leaving->release();
     m_log->setDescriber({});
-    delete m_panel;
-    m_panel = nullptr;
     delete m_poller;
     m_poller = nullptr;
     delete m_drives;
@@ -137,47 +124,24 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
                            const QHash<int, QString>& knownTypes)
 {
     // A unit being tested on this bus is ended first (its motors stopped), if the user agrees.
-    if (m_production &&
-        m_production->guard(tr("connect elsewhere"), freshStatusThen([this, settings, knownTypes] {
-                                connectTo(settings, knownTypes);
-                            })))
+    if (m_leaving->unitHolds(tr("connect elsewhere"),
+                             [this, settings, knownTypes] { connectTo(settings, knownTypes); }))
         return;
     // A start confirmed for this bus says nothing about the next one.
     TestRunPanel::forgetConfirmations();
-    dropCandidate();
+    m_pending.drop();
     QString error;
     std::unique_ptr<ModbusClient> client = m_factory(settings, m_log.get(), &error);
     if (!client) {
         refuseConnection(settings, error);
         return;
     }
-    // A working connection stays until the new one is open: a mistyped port or a gateway that
-    // does not answer must not cost the bus one was working on. Reopening the same serial port
-    // (other settings) cannot wait: the port is ours until it is closed.
-    const bool samePort = m_connected && settings.kind == ConnectionSettings::Kind::Serial &&
-                          m_settings.kind == ConnectionSettings::Kind::Serial &&
-                          settings.port == m_settings.port;
-    if (m_connected && !samePort) {
-        m_candidate = std::move(client);
-        m_candidateSettings = settings;
-        m_candidateTypes = knownTypes;
-        setConnectionText(tr("Connecting to %1… (still connected to %2)")
-                              .arg(m_candidate->describe(), m_client->describe()),
+    // The working connection stays until the new one is open, where it can (PendingConnection).
+    if (m_connected && PendingConnection::canWait(m_settings, settings)) {
+        m_status->setText(tr("Connecting to %1… (still connected to %2)")
+                              .arg(client->describe(), m_client->describe()),
                           false);
-        connect(m_candidate.get(), &ModbusClient::opened, this,
-                [this](bool ok, const QString& why) {
-                    if (!ok) {
-                        const ConnectionSettings failed = m_candidateSettings;
-                        dropCandidate();
-                        refuseConnection(failed, why);
-                        return;
-                    }
-                    std::unique_ptr<ModbusClient> opened = std::move(m_candidate);
-                    disconnect(opened.get(), &ModbusClient::opened, this, nullptr);
-                    adopt(std::move(opened), m_candidateSettings, m_candidateTypes);
-                    onOpened(true, QString());
-                });
-        m_candidate->open();
+        m_pending.open(std::move(client), settings, knownTypes);
         return;
     }
     adopt(std::move(client), settings, knownTypes);
@@ -185,21 +149,12 @@ void MainWindow::connectTo(const ConnectionSettings& settings,
     m_client->open();
 }
 
-void MainWindow::dropCandidate()
-{
-    if (!m_candidate)
-        return;
-    disconnect(m_candidate.get(), nullptr, this, nullptr);
-    // Possibly inside its own signal: deleted once that has returned.
-    m_candidate.release()->deleteLater();
-}
-
 void MainWindow::refuseConnection(const ConnectionSettings& settings, const QString& error)
 {
     const QString why = ConnectionDialog::explainOpenError(settings, error);
     if (m_connected && m_client) {
         // The bus one was working on stays as it was.
-        setConnectionText(
+        m_status->setText(
             tr("Connected: %1 (the new connection failed: %2)").arg(m_client->describe(), error),
             true);
         QMessageBox::warning(
@@ -207,12 +162,12 @@ void MainWindow::refuseConnection(const ConnectionSettings& settings, const QStr
             tr("%1\n\nStill connected to %2; nothing was changed.").arg(why, m_client->describe()));
         return;
     }
-    setConnectionText(tr("Not connected: %1").arg(error), true);
+    m_status->setText(tr("Not connected: %1").arg(error), true);
     // A bus that never opened offers nothing: no scan, no drives last seen, no pages. Later,
     // as this may run inside the failed client's own signal.
     if (m_client)
         QTimer::singleShot(0, this, [this] {
-            if (!m_connected && !m_candidate)
+            if (!m_connected && !m_pending.isOpening())
                 teardown();
         });
     m_fixedLineScanPending = false;
@@ -231,76 +186,26 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     m_drives = new BusDrives(m_client.get(), ProfileRegistry::builtIn(), this);
     m_poller = new DriveStatusPoller(m_drives, this);
     m_groups = new BusGroupTracker(m_drives);
-    m_panel = new BusPanel(m_drives, m_poller, m_splitter);
-    m_hub = new MonitorHub(m_drives, this);
-    m_docks->fill(m_drives, m_hub, m_groups, m_panel);
+    // The drives last seen here are offered back, but not when the caller names the drives.
+    m_views->make(m_drives, m_poller, m_groups, m_menus->toolbar(), settings, knownTypes.isEmpty());
     // The traffic log names parameters and who else a write reaches (group children).
     TrafficDescriber describer(m_drives, ProfileRegistry::builtIn());
     m_log->setDescriber(describer.describer());
     connect(m_groups, &BusGroupTracker::groupsChanged, m_groups,
             [describer, groups = m_groups]() mutable { describer.setGroups(groups->groups()); });
-    // STOP ALL is always on the toolbar and on the keyboard (StopAllButton::shortcuts()).
-    m_stopAll = new StopAllButton(m_drives, m_menus->toolbar());
-    m_stopAllAction = m_menus->toolbar()->addWidget(m_stopAll);
-    // The station's recipe knows its machine numbers: STOP ALL checks them, scanned or not.
-    m_stopAll->setExpectedDrives([this] {
-        QVector<QPair<int, QString>> drives;
-        const EolStation* station = m_production ? m_production->station() : nullptr;
-        if (station && station->hasRecipe())
-            for (const RecipePosition& p : station->recipe().positions)
-                drives.append({p.machineNumber, p.family});
-        return drives;
-    });
-    // No way out of this bus (quit, another connection) leaves a motor running unannounced.
-    m_exitGuard = new ExitGuard(m_drives, m_poller, this);
-    m_exitGuard->setLostLinkQuestion([this](const QString& leaving, std::function<void()> proceed) {
-        m_reconnection->askLeaving(leaving, std::move(proceed));
-    });
-    m_banner = new AlarmBanner(m_poller, m_central);
-    static_cast<QVBoxLayout*>(m_central->layout())->insertWidget(0, m_banner);
-    // The drives last seen here, offered back (not when the caller names the drives).
-    m_recall = new BusRecallBar(m_drives, settings, knownTypes.isEmpty(), m_central);
-    auto* column = static_cast<QVBoxLayout*>(m_central->layout());
-    column->insertWidget(column->indexOf(m_splitter), m_recall);
-    connect(m_recall, &BusRecallBar::restoreRequested, this,
+    m_leaving->watch(m_drives, m_poller);
+    connect(m_views->recall(), &BusRecallBar::restoreRequested, this,
             [this](const QHash<int, QString>& types) {
                 m_knownTypes = types;
                 if (m_connected)
                     identifyKnown();
             });
-    connect(m_recall, &BusRecallBar::scanRequested, this, [this] {
-        if (m_panel && m_connected && !m_panel->isScanning())
-            m_panel->startScan(1, 247);
-    });
-    // The header names the model once the variant is known (identified or set by hand).
-    connect(m_drives, &BusDrives::driveChanged, m_pages, &DrivePages::retitle);
-    // A group setup that is wrong is said where the engineer looks, not only in its view.
-    connect(m_groups, &BusGroupTracker::groupsChanged, this, [this] {
-        const QVector<BusGroups::Problem> problems = m_groups->groups().problems();
-        if (!problems.isEmpty())
-            statusBar()->showMessage(tr("Communication groups: %1 (Bus › Communication groups)")
-                                         .arg(BusGroups::describe(problems.first())),
-                                     15000);
-    });
     const bool simulated = settings.kind == ConnectionSettings::Kind::Simulated;
     m_status->setSimulated(simulated);
-    connect(m_banner, &AlarmBanner::showAlarms, this, &MainWindow::showAlarmsOf);
-    // STOP ALL may end in alarms (or clear a run that hid one): the open page reads again.
-    connect(m_stopAll, &StopAllButton::finished, this, [this] {
-        if (AlarmsPage* page = m_pages->alarmsPage())
-            page->refresh();
-    });
-    // The placeholder of the first connection; on a reconnection the old panel is gone and
-    // the first widget is the workspace, which stays.
-    if (m_splitter->widget(0) != m_workspace)
-        delete m_splitter->widget(0);
-    m_splitter->insertWidget(0, m_panel);
-    m_splitter->setStretchFactor(0, 0);
-    m_geometry.divide(m_panel);
-    connect(m_panel, &BusPanel::selectionChanged, m_pages, &DrivePages::showDrive);
+    m_geometry.divide(m_views->panel());
     // A scan found nothing: reconnect at the DC controller's fixed potentiometer-mode settings
     // and ask its address (FixedLineHint), once the new connection is up.
-    connect(m_panel, &BusPanel::fixedLineRescanRequested, this, [this] {
+    connect(m_views->panel(), &BusPanel::fixedLineRescanRequested, this, [this] {
         // Later: the panel asking is replaced by the new connection's.
         QTimer::singleShot(0, this, [this] {
             m_fixedLineScanPending = true;
@@ -309,7 +214,7 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     });
     connect(m_client.get(), &ModbusClient::connectionLost, this, [this](const QString& lost) {
         m_connected = false; // nothing to keep when another connection is tried
-        setConnectionText(tr("Connection lost: %1").arg(lost), true);
+        m_status->setText(tr("Connection lost: %1").arg(lost), true);
         // Every live view greys at once, before the message is read.
         setLinkUp(false, tr("Connection lost: %1").arg(lost));
         // What was known of the drives, said at once, and Reconnect.
@@ -318,13 +223,8 @@ void MainWindow::adopt(std::unique_ptr<ModbusClient> client, const ConnectionSet
     setWindowTitle(simulated
                        ? tr("OpenTOP — SIMULATED BUS (no hardware) — %1").arg(m_client->describe())
                        : tr("OpenTOP — %1").arg(m_client->describe()));
-    setConnectionText(tr("Connecting to %1…").arg(m_client->describe()), false);
+    m_status->setText(tr("Connecting to %1…").arg(m_client->describe()), false);
     m_reconnection->adopted(settings);
-}
-
-void MainWindow::setConnectionText(const QString& text, bool problem)
-{
-    m_status->setText(text, problem);
 }
 
 void MainWindow::setLinkUp(bool up, const QString& why)
@@ -345,15 +245,15 @@ void MainWindow::onOpened(bool ok, const QString& error)
         return;
     }
     if (m_settings.kind == ConnectionSettings::Kind::Simulated)
-        setConnectionText(tr("Connected: %1 (simulated, no hardware)").arg(m_client->describe()),
+        m_status->setText(tr("Connected: %1 (simulated, no hardware)").arg(m_client->describe()),
                           false);
     else // with what the serial driver accepted
         m_status->setConnected(m_client->describe(), m_client->lineReport());
     m_poller->start();
     identifyKnown();
-    if (m_fixedLineScanPending && m_panel) {
+    if (m_fixedLineScanPending && m_views->panel()) {
         const int slave = FixedLineHint::dcPotentiometer().slave();
-        m_panel->startScan(slave, slave);
+        m_views->panel()->startScan(slave, slave);
     }
     m_fixedLineScanPending = false;
     m_reconnection->opened();
@@ -388,74 +288,25 @@ void MainWindow::monitorAll()
     m_docks->monitorAll(m_drives->slaves());
 }
 
-std::function<void()> MainWindow::freshStatusThen(std::function<void()> then)
-{
-    // After a unit is cancelled, the drives' status must be read again before the exit check
-    // looks at it: the run has just stopped its motors.
-    return [this, then = std::move(then)] {
-        if (m_poller)
-            m_poller->afterFreshCycle(this, then);
-        else
-            then();
-    };
-}
-
 void MainWindow::disconnectBus()
 {
-    if (m_production &&
-        m_production->guard(tr("disconnect"), freshStatusThen([this] { disconnectBus(); })))
+    if (m_leaving->unitHolds(tr("disconnect"), [this] { disconnectBus(); }))
         return;
     if (!m_drives)
         return;
     // As on quitting: running drives and drives left in communication priority are named first.
     const auto close = [this] {
         teardown();
-        setConnectionText(tr("Not connected (disconnected)"), false);
+        m_status->setText(tr("Not connected (disconnected)"), false);
         emit connectionChanged(false);
     };
     checkLeaving(tr("disconnect"), close);
 }
 
-void MainWindow::checkLeaving(const QString& leaving, std::function<void()> proceed)
-{
-    if (m_exitGuard)
-        m_exitGuard->check(leaving, std::move(proceed));
-    else // no bus, or one that never came back: only what the lost link left behind is asked
-        m_reconnection->askLeaving(leaving, std::move(proceed));
-}
-
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (m_production && m_production->guard(tr("quit"), freshStatusThen([this] { close(); }))) {
+    if (!m_leaving->mayClose()) {
         event->ignore();
-        return;
-    }
-    int pending = 0;
-    if (m_drives) {
-        for (int s : m_drives->slaves())
-            pending += m_drives->parameters(s) ? m_drives->parameters(s)->pendingNames().size() : 0;
-    }
-    if (pending > 0 &&
-        QMessageBox::question(
-            this, tr("Unwritten changes"),
-            tr("%n edit(s) have not been written to the drives. Quit and discard them?", nullptr,
-               pending),
-            QMessageBox::Discard | QMessageBox::Cancel,
-            QMessageBox::Cancel) != QMessageBox::Discard) {
-        event->ignore();
-        return;
-    }
-    // Drives running or left in communication priority, or left so when the link dropped: ask
-    // first (outside this event).
-    if (!m_leavingChecked &&
-        ((m_exitGuard && m_exitGuard->wouldAsk()) || m_reconnection->wouldAsk())) {
-        event->ignore();
-        QTimer::singleShot(0, this, [this] {
-            checkLeaving(tr("quit"), [this] {
-                m_leavingChecked = true;
-                close();
-            });
-        });
         return;
     }
     m_geometry.save();

@@ -2,8 +2,11 @@
 
 #include "transport/ConnectionSettings.h"
 #include "ui/main/BusDocks.h"
+#include "ui/main/BusLeaving.h"
 #include "ui/main/ConnectionStatus.h"
+#include "ui/main/ConnectionViews.h"
 #include "ui/main/DrivePages.h"
+#include "ui/main/PendingConnection.h"
 #include "ui/main/WindowGeometry.h"
 
 #include <QHash>
@@ -12,37 +15,36 @@
 #include <functional>
 #include <memory>
 
-class QAction;
 class QLabel;
 class QSplitter;
 
 namespace opentop {
 
+class AlarmsPage;
 class BusDrives;
 class BusGroupTracker;
-class BusRecallBar;
-class GroupsView;
+class BusOverview;
 class BusPanel;
+class BusRecallBar;
 class DriveStatusPoller;
 class DriveWorkspace;
-class AlarmBanner;
-class ModbusClient;
-class StopAllButton;
 class ExitGuard;
-class BusOverview;
-class MonitorHub;
-class TrendPanel;
-class TrafficLog;
-class StatusLight;
-class AlarmsPage;
+class GroupsView;
 class MainMenus;
+class ModbusClient;
+class MonitorHub;
 class ProductionMode;
 class Reconnection;
+class StatusLight;
+class StopAllButton;
+class TrafficLog;
+class TrendPanel;
 
 // The main window: the bus on the left (scan, drives, status lights), the selected drive's
 // pages on the right. It owns the connection; all bus work happens on the client's worker
 // thread and comes back asynchronously, so the window never waits on the wire.
-// Its parts live beside it: MainMenus, DrivePages, BusDocks, ConnectionStatus, WindowGeometry.
+// Its parts live beside it: MainMenus, DrivePages, BusDocks, ConnectionViews, ConnectionStatus,
+// PendingConnection, BusLeaving (every way out of the bus), WindowGeometry.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
@@ -64,17 +66,20 @@ public:
     void disconnectBus();
     // Every way out of this bus asks here first: the exit question over a live link
     // (ExitGuard), the lost link's over a dead one (Reconnection); `proceed` when answered.
-    void checkLeaving(const QString& leaving, std::function<void()> proceed);
+    void checkLeaving(const QString& leaving, std::function<void()> proceed)
+    {
+        m_leaving->check(leaving, std::move(proceed));
+    }
     // Coming back from a lost link: Bus > Reconnect (Ctrl+R), the link bar, the last connection.
     Reconnection* reconnection() const { return m_reconnection; }
     bool isConnected() const { return m_connected; }
     ModbusClient* client() const { return m_client.get(); }
     BusDrives* drives() const { return m_drives; }
-    BusPanel* busPanel() const { return m_panel; }
+    BusPanel* busPanel() const { return m_views->panel(); }
     DriveWorkspace* workspace() const { return m_workspace; }
     TrafficLog* trafficLog() const { return m_log.get(); }
-    StopAllButton* stopAllButton() const { return m_stopAll; }
-    ExitGuard* exitGuard() const { return m_exitGuard; }
+    StopAllButton* stopAllButton() const { return m_views->stopAll(); }
+    ExitGuard* exitGuard() const { return m_leaving->exitGuard(); }
     DriveStatusPoller* statusPoller() const { return m_poller; }
     QLabel* connectionLabel() const { return m_status->label(); }
     // The link's light in the status bar: green only while connected and the link is up.
@@ -83,14 +88,14 @@ public:
     AlarmsPage* alarmsPage() const { return m_pages->alarmsPage(); }
     // Selects `slave` and brings its Alarms page to the front (the alarm banner's Show).
     void showAlarmsOf(int slave) { m_pages->showAlarmsOf(slave); }
-    MonitorHub* monitorHub() const { return m_hub; }
+    MonitorHub* monitorHub() const { return m_views->hub(); }
     BusOverview* busOverview() const { return m_docks->overview(); }
     TrendPanel* trendPanel() const { return m_docks->trends(); }
     // Every drive's communication group, kept up to date (writes to a parent re-read children).
     BusGroupTracker* groups() const { return m_groups; }
     GroupsView* groupsView() const { return m_docks->groupsView(); }
     // The offer of the drives last seen on this connection (or to scan), per connection.
-    BusRecallBar* recallBar() const { return m_recall; }
+    BusRecallBar* recallBar() const { return m_views->recall(); }
     // The permanent marker of a simulated bus (hidden on hardware).
     QLabel* simulatedBanner() const { return m_status->simulatedBanner(); }
     // The end-of-line operator screen and the switch to it (View > Production mode).
@@ -107,18 +112,14 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
-    std::function<void()> freshStatusThen(std::function<void()> then);
     void teardown();
     // Makes `client` the window's connection (the old one closed) and builds its views; the
     // client is opened by the caller, or already open.
     void adopt(std::unique_ptr<ModbusClient> client, const ConnectionSettings& settings,
                const QHash<int, QString>& knownTypes);
-    void dropCandidate();
     // A connection that could not be made: says why, and whether the old one is kept.
     void refuseConnection(const ConnectionSettings& settings, const QString& error);
     void onOpened(bool ok, const QString& error);
-    // The connection state in the status bar: one shortened line, red when something is wrong.
-    void setConnectionText(const QString& text, bool problem);
     // The link is up or down: every live view follows (monitor/Freshness).
     void setLinkUp(bool up, const QString& why);
     void identifyKnown();
@@ -128,34 +129,25 @@ private:
     ConnectionSettings m_settings;
     QHash<int, QString> m_knownTypes;
     std::unique_ptr<ModbusClient> m_client;
-    // A connection being opened while the working one stays (connectTo()).
-    std::unique_ptr<ModbusClient> m_candidate;
-    ConnectionSettings m_candidateSettings;
-    QHash<int, QString> m_candidateTypes;
+    PendingConnection m_pending; // a connection being opened while the working one stays
     bool m_connected = false;
     // The connection being opened is the bus panel's rescan at FixedLineHint's settings.
     bool m_fixedLineScanPending = false;
     BusDrives* m_drives = nullptr;
     DriveStatusPoller* m_poller = nullptr;
-    BusPanel* m_panel = nullptr;
     DriveWorkspace* m_workspace;
     QWidget* m_central;
-    AlarmBanner* m_banner = nullptr;
-    StopAllButton* m_stopAll = nullptr;
-    ExitGuard* m_exitGuard = nullptr;
-    bool m_leavingChecked = false; // the user has answered the exit question: close now
-    QAction* m_stopAllAction = nullptr;
     QSplitter* m_splitter;
     ConnectionStatus* m_status; // the status bar's connection widgets
     WindowGeometry m_geometry;
     BusDocks* m_docks = nullptr;
+    ConnectionViews* m_views = nullptr; // the bus list, STOP ALL, banners: per connection
     MainMenus* m_menus = nullptr;
     ProductionMode* m_production = nullptr;
     DrivePages* m_pages = nullptr;
-    MonitorHub* m_hub = nullptr;
     BusGroupTracker* m_groups = nullptr;
-    BusRecallBar* m_recall = nullptr;
     Reconnection* m_reconnection;
+    BusLeaving* m_leaving;
 };
 
 } // namespace opentop

@@ -7,8 +7,6 @@
 #include <QWidget>
 #include <optional>
 
-class QLabel;
-class QPushButton;
 class QTabWidget;
 
 namespace opentop {
@@ -17,9 +15,11 @@ class AutotunePanel;
 class DeviceSession;
 class ProposalFlow;
 class StepTestPanel;
+class TuningDriveSettings;
 class TuningGains;
 class TuningLimitsBox;
 class TuningRunsView;
+class TuningStatusRow;
 
 // "Speed loop tuning" for a drive whose profile has a TuningSpec: step tests overlaid on one
 // chart (each run with its gains, shown or hidden, its metrics), the relay autotune with its
@@ -64,31 +64,25 @@ protected:
 
 private:
     void readDrive();
+    void settingsRead();
     void updateAutoLimits();
     QString confirmLimits(const TuningRunner::Limits& limits) const;
     void startStep(const TuningRunner::StepPlan& plan, const TuningRunner::Limits& limits);
     void startAutotune(const TuningRunner::RelayPlan& plan, const TuningRunner::Limits& limits);
     void stepDone(const TuningRunner::Result& result);
     void autotuneDone(const TuningRunner::Result& result);
-    void showStopReport(const TuningRunner::Result& result);
     void updateState();
-    void setPhase(const QString& text, bool bad = false);
 
     DeviceSession* m_session;
     TuningSpec m_spec;
     QString m_drive;
     TuningRunner* m_runner;
     TuningGains* m_gains;
-    QString m_unit;
-    double m_scale = 1;
-    double m_maxCurrentSetting = 0; // A, 0: unknown
+    TuningDriveSettings* m_settings;
     bool m_testing = false;
     bool m_cancelled = false; // the user stopped the running test
-    int m_liveId = -1;
 
-    QPushButton* m_stop;
-    QLabel* m_phase;
-    QLabel* m_stopReport;
+    TuningStatusRow* m_status;
     TuningLimitsBox* m_limits;
     QTabWidget* m_sides;
     StepTestPanel* m_step;

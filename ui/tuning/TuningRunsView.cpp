@@ -1,5 +1,6 @@
 #include "ui/tuning/TuningRunsView.h"
 
+#include "model/tuning/StepMetrics.h"
 #include "ui/tuning/TuningChart.h"
 #include "ui/tuning/TuningMetricsView.h"
 #include "ui/tuning/TuningRunCsv.h"
@@ -152,6 +153,51 @@ void TuningRunsView::setRecording(bool recording)
     else
         m_redraw->stop();
     redraw();
+}
+
+void TuningRunsView::beginLive(const QString& title, const PidGains& gains, double from, double to,
+                               const QString& unit)
+{
+    TuningRun& run = addRun(TuningRun::Kind::Step, title, gains);
+    run.live = true;
+    run.result.from = from;
+    run.result.to = to;
+    run.result.speedUnit = unit;
+    m_liveId = run.id;
+    runChanged(run.id);
+    setRecording(true);
+}
+
+void TuningRunsView::addLiveSample(const TuningSample& sample)
+{
+    if (TuningRun* r = run(m_liveId))
+        r->result.samples << sample;
+}
+
+void TuningRunsView::endLive(const TuningRunner::Result& result, const QString& unit)
+{
+    if (TuningRun* r = run(m_liveId)) {
+        r->live = false;
+        r->result = result;
+        r->result.speedUnit = result.speedUnit.isEmpty() ? unit : result.speedUnit;
+        if (result.ok || !result.samples.isEmpty())
+            r->gains = result.gains;
+        runChanged(r->id);
+    }
+    m_liveId = -1;
+    setRecording(false);
+}
+
+void TuningRunsView::addPrediction(const QString& title, const TuningRunner::Result& autotune,
+                                   double from, double to, const QString& unit)
+{
+    TuningRun& run = addRun(TuningRun::Kind::Prediction, title, autotune.proposal);
+    run.result.samples = autotune.predicted;
+    run.result.from = from;
+    run.result.to = to;
+    run.result.speedUnit = autotune.speedUnit.isEmpty() ? unit : autotune.speedUnit;
+    run.result.metrics = StepMetrics::measure(autotune.predicted, from, to);
+    runChanged(run.id);
 }
 
 void TuningRunsView::redraw()
