@@ -12,7 +12,7 @@ namespace {
 // Part of the scan's output: its messages keep the scan's context (and translations).
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("opentop::ScanCommand", text);
+    return QCoreApplication::translate("opentop::ScanDrives", text);
 }
 
 } // namespace

@@ -11,7 +11,7 @@ namespace {
 
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("opentop::ScanCommand", text);
+    return QCoreApplication::translate("opentop::ScanProgress", text);
 }
 
 bool isTerminal(QTextStream& stream)

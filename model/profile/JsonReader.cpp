@@ -9,7 +9,7 @@ namespace opentop {
 namespace {
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("opentop::ProfileLoader", text);
+    return QCoreApplication::translate("opentop::JsonReader", text);
 }
 } // namespace
 

@@ -14,7 +14,7 @@ namespace {
 
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("opentop::ProfileLoader", text);
+    return QCoreApplication::translate("opentop::ParameterReader", text);
 }
 
 const QStringList kKinds = {QStringLiteral("setting"), QStringLiteral("status"),
