@@ -260,187 +260,142 @@
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="38"/>
         <source>top level</source>
         <translation>最上位</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="55"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="41"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; は 1 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="66"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; は小文字の ID でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="60"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity は N、E、O のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="78"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud は 1200–115200、stopBits は 1 または 2 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats: &quot;%1&quot; は 8N1 や 8E1 のような形式ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="80"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats には既定の形式 %1 が含まれている必要があります</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="98"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="84"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs は 0–60000 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters は 1–125、maxWriteRegisters は 1–123 です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="113"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="99"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves は 1–247 の範囲でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] には id、model、label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="116"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot; が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="141"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="127"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] には一意の id と label が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="152"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="138"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] には function 3 または 4 と first ≤ last が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1 has no name</source>
         <translation>%1 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="198"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="184"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset は %2 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="187"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: コード %2 が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
-        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
-        <translation>%1: storeWith &quot;%2&quot; はコマンドパラメータではありません</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
-        <source>%1: the default is not among its allowed values</source>
-        <translation>%1: 初期値が許容値に含まれていません</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
-        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
-        <translation>%1: ビットフィールド &quot;%2&quot;: function &quot;%3&quot; は読出し可能なパラメータではありません</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
-        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
-        <translation>%1: 不明なパラメータ &quot;%2&quot; に対する条件です</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
-        <source>%1: the default is not allowed when %2</source>
-        <translation>%1: %2 のときは初期値が許容されません</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
-        <source>%1 runs past address 0xFFFF</source>
-        <translation>%1 がアドレス 0xFFFF を超えています</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
-        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
-        <translation>%1 が 0x%3 で &quot;%2&quot; と重なっています（%4 レジスタ）</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
-        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
-        <translation>identify: &quot;%1&quot; は identify の読出し範囲内のパラメータでなければなりません</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
-        <source>identify.nameMatch is not a valid regular expression</source>
-        <translation>identify.nameMatch が正しい正規表現ではありません</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="203"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 不明なパラメータ &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 はパラメータ名、名前のリスト、またはオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="240"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot; にビットフィールド &quot;%3&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2 は &quot;%3&quot; で書き込める値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="264"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs には &quot;selected&quot; ロールが必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="280"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 には &quot;selected&quot; と &quot;maxSeconds&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="283"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2 は &quot;selected&quot; ロールの値ではないか、重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="288"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot; は 0 より大きく 600 以下でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="320"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot; は %2 のいずれかで、それぞれ 1 回だけでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="323"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot; は #rrggbb でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="325"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot; と &quot;meaning&quot; は空にできません</translation>
     </message>
@@ -453,6 +408,16 @@
         <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>未到達</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <source>error: %1</source>
+        <translation>エラー: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <source>nothing was written</source>
+        <translation>何も書き込んでいません</translation>
     </message>
 </context>
 <context>
@@ -874,6 +839,134 @@
     </message>
 </context>
 <context>
+    <name>opentop::AlarmRecordsView</name>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>#</source>
+        <translation>No.</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Code</source>
+        <translation>コード</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Panel</source>
+        <translation>パネル表示</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Cleared by</source>
+        <translation>解除方法</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="67"/>
+        <source>Cause and remedy</source>
+        <translation>原因と対策</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="68"/>
+        <source>Communication error register</source>
+        <translation>通信エラーレジスタ</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="75"/>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="115"/>
+        <source>Select a record to see its cause and remedy.</source>
+        <translation>履歴を選択すると原因と対策を表示します。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="76"/>
+        <source>Not read yet.</source>
+        <translation>未読出しです。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="126"/>
+        <source>This drive has no communication error register.</source>
+        <translation>このドライバには通信エラーレジスタがありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="128"/>
+        <source>%1: could not be read.</source>
+        <translation>%1: 読み出せません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="130"/>
+        <source>%1: no error (0).</source>
+        <translation>%1: エラーなし (0)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="133"/>
+        <source>%1: %2, not a known code.</source>
+        <translation>%1: %2（既知のコードではありません）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="135"/>
+        <source>%1: %2 %3
+Cause: %4
+Remedy: %5</source>
+        <translation>%1: %2 %3
+原因: %4
+対策: %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No alarm records</source>
+        <translation>アラーム履歴なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No warning records</source>
+        <translation>警告履歴なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="153"/>
+        <source>%1: could not be read: %2</source>
+        <translation>%1: 読み出せません: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="156"/>
+        <source>%1: %2 of %3 records, newest first</source>
+        <translation>%1: %3 件中 %2 件（新しい順）</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="167"/>
+        <source>unknown code</source>
+        <translation>不明なコード</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="196"/>
+        <source>Record %1: code %2 is not in the %3 table.</source>
+        <translation>履歴 %1: コード %2 は %3 表にありません。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="201"/>
+        <source>%1 %2 (record %3)</source>
+        <translation>%1 %2（履歴 %3）</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="203"/>
+        <source>Cause: %1</source>
+        <translation>原因: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="205"/>
+        <source>Remedy: %1</source>
+        <translation>対策: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="207"/>
+        <source>To clear: %1</source>
+        <translation>解除方法: %1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AlarmsCommand</name>
     <message>
         <location filename="../cli/AlarmsCommand.cpp" line="164"/>
@@ -969,298 +1062,173 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="35"/>
         <source>&amp;Re-read</source>
         <translation>再読出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="36"/>
         <source>Reset &amp;alarm…</source>
         <translation>アラームリセット(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="62"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="37"/>
         <source>&amp;Clear records…</source>
         <translation>履歴消去(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="41"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>局番 %1 (%2) のアラームと警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>#</source>
-        <translation>No.</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Code</source>
-        <translation>コード</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Panel</source>
-        <translation>パネル表示</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Name</source>
-        <translation>名称</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Cleared by</source>
-        <translation>解除方法</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="111"/>
-        <source>Cause and remedy</source>
-        <translation>原因と対策</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="112"/>
-        <source>Communication error register</source>
-        <translation>通信エラーレジスタ</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか、電源再投入でのみ解除できるかを表示します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>ドライバが保持しているアラーム履歴・警告履歴を消去します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="132"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="303"/>
-        <source>Select a record to see its cause and remedy.</source>
-        <translation>履歴を選択すると原因と対策を表示します。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
-        <source>Not read yet.</source>
-        <translation>未読出しです。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="135"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>このドライバはアラーム・警告履歴を保持しません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="165"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
         <source>Alarm state: %1</source>
         <translation>アラーム状態: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
         <source>Reading the records…</source>
         <translation>履歴を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="277"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="280"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="284"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
         <source>Could not be read: %1</source>
         <translation>読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
-        <source>This drive has no communication error register.</source>
-        <translation>このドライバには通信エラーレジスタがありません。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
-        <source>%1: could not be read.</source>
-        <translation>%1: 読み出せません。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
-        <source>%1: no error (0).</source>
-        <translation>%1: エラーなし (0)。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
-        <source>%1: %2, not a known code.</source>
-        <translation>%1: %2（既知のコードではありません）。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="319"/>
-        <source>%1: %2 %3
-Cause: %4
-Remedy: %5</source>
-        <translation>%1: %2 %3
-原因: %4
-対策: %5</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No alarm records</source>
-        <translation>アラーム履歴なし</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No warning records</source>
-        <translation>警告履歴なし</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="337"/>
-        <source>%1: could not be read: %2</source>
-        <translation>%1: 読み出せません: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="340"/>
-        <source>%1: %2 of %3 records, newest first</source>
-        <translation>%1: %3 件中 %2 件（新しい順）</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="351"/>
-        <source>unknown code</source>
-        <translation>不明なコード</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
-        <source>Record %1: code %2 is not in the %3 table.</source>
-        <translation>履歴 %1: コード %2 は %3 表にありません。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
-        <source>%1 %2 (record %3)</source>
-        <translation>%1 %2（履歴 %3）</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
-        <source>Cause: %1</source>
-        <translation>原因: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
-        <source>Remedy: %1</source>
-        <translation>対策: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="391"/>
-        <source>To clear: %1</source>
-        <translation>解除方法: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="420"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
         <source>Writes: %1</source>
         <translation>書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>原因が取り除かれていれば、発生中のアラームを解除します。電源再投入でのみ解除できるアラームもあります。結果に表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="428"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
         <source>Reset alarm</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="427"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>局番 %1 にアラームリセットコマンドを送信しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="435"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Sending the alarm reset…</source>
         <translation>アラームリセットを送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="441"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="444"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>ドライバの電源を切り、5 s 待ってから再投入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 件）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>the alarm and warning records</source>
         <translation>アラーム履歴と警告履歴</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>Clear records</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source>Erase %1 of machine %2?</source>
         <translation>局番 %2 の%1を消去しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source> and </source>
         <translation> と </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="461"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>履歴は復元できません。書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="463"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>Erasing the records…</source>
         <translation>履歴を消去中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="482"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="484"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -2028,6 +1996,27 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusLeaving</name>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="68"/>
+        <location filename="../ui/main/BusLeaving.cpp" line="88"/>
+        <source>quit</source>
+        <translation>終了</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="77"/>
+        <source>Unwritten changes</source>
+        <translation>未書込みの変更</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/main/BusLeaving.cpp" line="78"/>
+        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
+        <translation>
+            <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusListMenu</name>
     <message>
         <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
@@ -2482,22 +2471,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="223"/>
+        <location filename="../model/bus/BusScanner.cpp" line="152"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their address switches (%3)</source>
         <translation>応答が 2 回壊れていました (%1)：2 台のドライバが局番 %2 を共有している可能性があります。アドレススイッチを確認してください (%3)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="229"/>
+        <location filename="../model/bus/BusScanner.cpp" line="158"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>応答はありますが、一致するデバイスプロファイルがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="247"/>
+        <location filename="../model/bus/BusScanner.cpp" line="171"/>
         <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
         <translation>応答はありますが、識別の読出しに応答がありません (%1)。さらに %2 回問い合わせても同じです: 手動で追加するか、待ち時間を長くして再スキャンしてください</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="333"/>
+        <location filename="../model/bus/BusScanner.cpp" line="243"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>最初は応答が遅れました（%1 ms の待ち時間の後）。待ち時間を長くすると、このバスのスキャンが確実になります</translation>
     </message>
@@ -3961,6 +3950,14 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::ConnectionViews</name>
+    <message>
+        <location filename="../ui/main/ConnectionViews.cpp" line="80"/>
+        <source>Communication groups: %1 (Bus › Communication groups)</source>
+        <translation>通信グループ: %1（バス › 通信グループ）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DbuSimDevice</name>
     <message>
         <location filename="../sim/DbuSimDevice.cpp" line="340"/>
@@ -4518,41 +4515,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="91"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="93"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="95"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="96"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 は設定ではなくコマンドです。コマンドは要求に応じて 1 つずつ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="249"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="260"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="272"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="252"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="263"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="275"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="283"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n 件の書込みに失敗しました: %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>書き込みましたが、届いたすべてのドライバでは確認できていません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="292"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 個の値を書込み・照合しました</numerusform>
@@ -4562,40 +4559,30 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="82"/>
+        <location filename="../model/session/DeviceSession.cpp" line="83"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 にはパラメータ &quot;%2&quot; がありません</translation>
     </message>
     <message>
         <location filename="../model/session/BlockReader.cpp" line="50"/>
-        <location filename="../model/session/DeviceSession.cpp" line="91"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 は読み出せません（書込み専用コマンド）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
-        <source>cannot check the value: reading %1 failed: %2</source>
-        <translation>値をチェックできません: %1 の読出しに失敗しました: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="156"/>
+        <location filename="../model/session/DeviceSession.cpp" line="137"/>
         <source>%1 is read-only</source>
         <translation>%1 は読出し専用です</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="162"/>
+        <location filename="../model/session/DeviceSession.cpp" line="143"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 は %2 コマンドです。明示的に要求した場合にのみ送信します</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="192"/>
+        <location filename="../model/session/DeviceSession.cpp" line="173"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1 はチェックできません: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="227"/>
-        <source>reading %1 failed: %2</source>
-        <translation>%1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
         <location filename="../model/session/BlockWriter.cpp" line="28"/>
@@ -4608,12 +4595,12 @@ Configuration changes written but not stored are discarded.</source>
         <translation>応答が短すぎます</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="291"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>written, but reading it back failed: %1</source>
         <translation>書き込みましたが、読み戻しに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="300"/>
+        <location filename="../model/session/DeviceSession.cpp" line="263"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>照合失敗: %1 を書き込みましたが、デバイスの値は %2 です</translation>
     </message>
@@ -4814,119 +4801,119 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::DriveStatusPoller</name>
+    <name>opentop::DriveStatus</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="8"/>
         <source>not polled yet</source>
         <translation>未ポーリング</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="10"/>
         <source>online</source>
         <translation>オンライン</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="12"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>応答なし（%n 回連続）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="13"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通信エラー（%n 回連続）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="19"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="31"/>
         <source>Status not known yet</source>
         <translation>状態不明</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="21"/>
         <source>No answer: %1</source>
         <translation>応答なし: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
-        <source>Alarm %1 %2</source>
-        <translation>アラーム %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
-        <source>Alarm %1h (not in the alarm table)</source>
-        <translation>アラーム %1h（アラーム表にありません）</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
-        <source>Alarm active</source>
-        <translation>アラーム発生中</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="24"/>
         <source>Communication error: %1</source>
         <translation>通信エラー: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="34"/>
+        <source>Alarm %1 %2</source>
+        <translation>アラーム %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="36"/>
+        <source>Alarm %1h (not in the alarm table)</source>
+        <translation>アラーム %1h（アラーム表にありません）</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="38"/>
+        <source>Alarm active</source>
+        <translation>アラーム発生中</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="42"/>
         <source>Running</source>
         <translation>運転中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CCW</source>
         <translation>CCW 運転中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CW</source>
         <translation>CW 運転中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="45"/>
         <source>Stopped, no alarm</source>
         <translation>停止中、アラームなし</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="52"/>
         <source>grey</source>
         <translation>灰</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="54"/>
         <source>green</source>
         <translation>緑</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="56"/>
         <source>orange</source>
         <translation>橙</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="58"/>
         <source>sky blue</source>
         <translation>水色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="60"/>
         <source>red</source>
         <translation>赤</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="62"/>
         <source>purple</source>
         <translation>紫</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="64"/>
         <source>blue</source>
         <translation>青</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="101"/>
         <source>%1; %2</source>
         <translation>%1、%2</translation>
     </message>
@@ -5233,117 +5220,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="53"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="56"/>
         <source>identifying</source>
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
         <source>no drive answers at machine number %1</source>
         <translation>局番 %1 で応答するドライバがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>局番 %1 のドライバを識別できません: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="90"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="99"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 ドライバですが、レシピには %2 ドライバが必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>ファームウェア %1、レシピで許可されているのは %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="95"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="104"/>
         <source>unknown</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
         <source>no profile for the family %1</source>
         <translation>ファミリ %1 のプロファイルがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="183"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>cannot read whether the motor runs or an alarm is active: %1</source>
         <translation>モータが運転中か、アラームが発生しているかを読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="184"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="194"/>
         <source>no answer</source>
         <translation>応答なし</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="191"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>its motor was running before the test</source>
         <translation>試験前からモータが運転していました</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="192"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>試験前にモータがすでに運転しています（中断された実行の残り？）。何も書き込んでいません: 先に停止してください（全停止、またはドライバ側で）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="199"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
         <translation>試験前からアラームが発生しています（前の製品の残り？）。何も書き込んでいません: アラームをリセットして再試験してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="219"/>
         <source>writing the settings</source>
         <translation>設定を書込み中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="251"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="258"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="224"/>
         <source>writing the settings: %1</source>
         <translation>設定の書込み: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
         <source>reading every setting back</source>
         <translation>全設定を読み戻し中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="281"/>
-        <source>%1 cannot be read back: %2</source>
-        <translation>%1 を読み戻せません: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="287"/>
-        <source>%1 does not keep its value: set to %2, reads %3</source>
-        <translation>%1 が値を保持しません: %2 に設定、読出し値 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="291"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
         <source>verifying the settings: %1</source>
         <translation>設定の照合: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="305"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="252"/>
         <source>arming the communication-loss stop</source>
         <translation>通信途絶停止を有効化中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="319"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>testing</source>
         <translation>試験中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="323"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
         <source>step %1 of %2: %3</source>
         <translation>ステップ %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="386"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="335"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -6227,196 +6199,155 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="58"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>ユーザーのいないステーションで検査する人 (既定: ログイン名)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="107"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>レシピの規則で止められる再試験（合格済みのシリアル、または試験回数を使い切ったもの）を技術者が許可します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="144"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="113"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="172"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2 が許可するのは %3。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="174"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>any %1 variant</source>
         <translation>%1 の全機種</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="183"/>
+        <location filename="../cli/EolRunCommand.cpp" line="147"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: レシピに局番 %2 の位置がない。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="197"/>
+        <location filename="../cli/EolRunCommand.cpp" line="161"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="212"/>
+        <location filename="../cli/EolRunCommand.cpp" line="176"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="243"/>
+        <location filename="../cli/EolRunCommand.cpp" line="207"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="247"/>
+        <location filename="../cli/EolRunCommand.cpp" line="211"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="252"/>
+        <location filename="../cli/EolRunCommand.cpp" line="216"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="278"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>error: %1; nothing was sent</source>
         <translation>エラー: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="280"/>
+        <location filename="../cli/EolRunCommand.cpp" line="307"/>
         <source>a technician allows it with --retest</source>
         <translation>技術者は --retest で許可できます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="284"/>
+        <location filename="../cli/EolRunCommand.cpp" line="259"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注: %1。--retest の許可により再試験します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="304"/>
+        <location filename="../cli/EolRunCommand.cpp" line="268"/>
         <source>station: %1</source>
         <translation>ステーション: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="313"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="348"/>
-        <location filename="../cli/EolRunCommand.cpp" line="369"/>
-        <source>drive %1</source>
-        <translation>ドライバ %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>ok</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>FAIL</source>
-        <translation>不合格</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="392"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="423"/>
-        <source>rev. %1</source>
-        <translation>rev. %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
-        <source>attempt %1</source>
-        <translation>%1 回目の試験</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="432"/>
-        <source>the result was NOT recorded: %1</source>
-        <translation>結果は記録されていません: %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="434"/>
-        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
-        <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="439"/>
-        <source>WARNING: motor not confirmed stopped: %1</source>
-        <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
 </context>
 <context>
@@ -6466,6 +6397,68 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::EolRunOutput</name>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="85"/>
+        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <source>drive %1</source>
+        <translation>ドライバ %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>ok</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>FAIL</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <source>rev. %1</source>
+        <translation>rev. %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <source>attempt %1</source>
+        <translation>%1 回目の試験</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <source>the result was NOT recorded: %1</source>
+        <translation>結果は記録されていません: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <source>WARNING: motor not confirmed stopped: %1</source>
+        <translation>警告: モータの停止が確認できません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolSettingsWriter</name>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="69"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="95"/>
+        <source>%1 cannot be read back: %2</source>
+        <translation>%1 を読み戻せません: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="101"/>
+        <source>%1 does not keep its value: set to %2, reads %3</source>
+        <translation>%1 が値を保持しません: %2 に設定、読出し値 %3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolSpeedChart</name>
     <message>
         <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
@@ -6492,259 +6485,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="141"/>
-        <source>no results database</source>
-        <translation>結果データベースがありません</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
-        <source>opening the results database</source>
-        <translation>結果データベースを開いています</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="140"/>
-        <source>NOT REACHABLE (%1); trying again by itself</source>
-        <translation>接続できません（%1）。自動で再試行中</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="149"/>
+        <location filename="../model/station/EolStation.cpp" line="120"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="153"/>
+        <location filename="../model/station/EolStation.cpp" line="124"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="158"/>
-        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
-        <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="165"/>
-        <source>the results database is being opened; try again in a moment</source>
-        <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="167"/>
-        <source>the results database is not open; nothing is tested unless it is recorded</source>
-        <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="169"/>
-        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
-        <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: シリアル番号 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="184"/>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="142"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="146"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="151"/>
         <source>no serial number</source>
         <translation>シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="221"/>
-        <source>a drive of the station is not safe: %1</source>
-        <translation>ステーションのドライブが安全ではありません: %1</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="256"/>
+        <location filename="../model/station/EolStation.cpp" line="182"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>シリアル %1 を再試験、%2 が許可:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="292"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>no unit was started yet</source>
         <translation>まだ試験を開始した製品がありません</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="304"/>
-        <source>cancelled before it started</source>
-        <translation>開始前に取り消されました</translation>
     </message>
 </context>
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
-        <source>allowed %1–%2 %3</source>
-        <translation>許容 %1–%2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
-        <source>allowed at most %1 %2</source>
-        <translation>許容 最大 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
-        <source>allowed at least %1 %2</source>
-        <translation>許容 最小 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="118"/>
         <source>step %1 (%2)</source>
         <translation>ステップ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="131"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="124"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="148"/>
         <source>the drive&apos;s session ended</source>
         <translation>ドライバのセッションが終了しました</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="204"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="224"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="236"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="197"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="215"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="225"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="216"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="209"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1: ドライバが通信優先になっていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="266"/>
-        <source>%1: the drive stopped answering: %2</source>
-        <translation>%1: ドライバが応答しなくなりました: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="274"/>
-        <source>%1: the drive raised an alarm while running</source>
-        <translation>%1: 運転中にドライバでアラームが発生しました</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="297"/>
-        <source>%1: %2 %3</source>
-        <translation>%1: %2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="316"/>
-        <source>%1: the drive has no speed to wait for</source>
-        <translation>%1: 待機する速度がドライバにありません</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
-        <source>time to reach speed</source>
-        <translation>速度到達時間</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="353"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="354"/>
-        <source>unknown</source>
-        <translation>不明</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="355"/>
-        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
-        <translation>%1: %5 s 以内に %2 %3 ±%4 %3 に到達しませんでした（最終読出し値 %6 %3）</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="356"/>
-        <source>its target</source>
-        <translation>目標値</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="413"/>
-        <source>%1 could not be read</source>
-        <translation>%1 を読み出せませんでした</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="423"/>
-        <source>%1 %2 %3, %4</source>
-        <translation>%1 %2 %3、%4</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="441"/>
-        <source>%1: the drive reports no alarms</source>
-        <translation>%1: ドライバはアラームなし</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="454"/>
-        <source>alarms raised</source>
-        <translation>発生したアラーム</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="457"/>
-        <source>%1: the drive has an alarm</source>
-        <translation>%1: ドライバでアラームが発生しています</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>time to stop</source>
-        <translation>停止時間</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="479"/>
-        <source>%1: stopped after %2 s, allowed at most %3 s</source>
-        <translation>%1: %2 s 後に停止、許容は最大 %3 s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
-        <source>%1: nothing to read</source>
-        <translation>%1: 読み出すものがありません</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
-        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
-        <translation>%1: %2 の読出し値は &quot;%3&quot;、期待値は &quot;%4&quot;</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
-        <source>%1: %2 reads %3 %4, %5</source>
-        <translation>%1: %2 の読出し値 %3 %4、%5</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="256"/>
         <source>the stop command failed: %1</source>
         <translation>停止コマンドが失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="269"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 後に停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="270"/>
         <source>not confirmed stopped: %1</source>
         <translation>停止未確認: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
         <source>communication priority could not be given back: %1</source>
         <translation>通信優先を戻せませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="157"/>
         <source>the steps ended with the motor running</source>
         <translation>ステップ終了時にモータが運転中でした</translation>
     </message>
@@ -7698,6 +7525,90 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::GoldenRecipeSource</name>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="39"/>
+        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>%1 から新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="55"/>
+        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
+        <translation>局番 %1 はバス上の既知のドライバではありません。先にバスをスキャンしてください</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Reading the golden unit&apos;s settings…</source>
+        <translation>マスター品の設定を読出し中…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="73"/>
+        <source>machine number %1 is not on the bus</source>
+        <translation>局番 %1 はバス上にありません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="86"/>
+        <source>cancelled: no recipe was made</source>
+        <translation>キャンセル: レシピは作成していません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>New recipe</source>
+        <translation>新規レシピ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <source>Product name:</source>
+        <translation>製品名:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>Revision:</source>
+        <translation>リビジョン:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="111"/>
+        <source>Golden unit&apos;s backup file</source>
+        <translation>マスター品のバックアップファイル</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="112"/>
+        <source>Backups (*.json)</source>
+        <translation>バックアップ (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="124"/>
+        <source>No drives on the bus: connect and scan first.</source>
+        <translation>バス上にドライバがありません: 先に接続してスキャンしてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="132"/>
+        <source>New recipe from drives</source>
+        <translation>ドライバから新規レシピ</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="133"/>
+        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
+        <translation>マスター品のドライバの局番（検出: %1）:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="143"/>
+        <source>&quot;%1&quot; is not a machine number (1–247)</source>
+        <translation>&quot;%1&quot; は局番 (1–247) ではありません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="152"/>
+        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>バス上のドライバから新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GroupCheck</name>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="62"/>
@@ -8423,6 +8334,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::LimitCheck</name>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="35"/>
+        <source>%1 could not be read</source>
+        <translation>%1 を読み出せませんでした</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="50"/>
+        <source>%1 %2 %3, %4</source>
+        <translation>%1 %2 %3、%4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="73"/>
+        <source>allowed %1–%2 %3</source>
+        <translation>許容 %1–%2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="75"/>
+        <source>allowed at most %1 %2</source>
+        <translation>許容 最大 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="77"/>
+        <source>allowed at least %1 %2</source>
+        <translation>許容 最小 %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>opentop::LineFormat</name>
     <message>
         <location filename="../transport/LineFormat.cpp" line="37"/>
@@ -8699,33 +8638,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="55"/>
+        <location filename="../ui/main/MainWindow.cpp" line="58"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="141"/>
+        <location filename="../ui/main/MainWindow.cpp" line="127"/>
         <source>connect elsewhere</source>
         <translation>別の接続先への接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="164"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1 に接続中…（%2 には接続したまま）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="158"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>接続済み: %1（新しい接続は失敗しました: %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
-        <location filename="../ui/main/MainWindow.cpp" line="220"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="175"/>
         <source>Cannot connect</source>
         <translation>接続できません</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -8734,80 +8673,70 @@ Still connected to %2; nothing was changed.</source>
 %2 に接続したままです。何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="210"/>
-        <location filename="../ui/main/MainWindow.cpp" line="342"/>
+        <location filename="../ui/main/MainWindow.cpp" line="165"/>
+        <location filename="../ui/main/MainWindow.cpp" line="242"/>
         <source>Not connected: %1</source>
         <translation>未接続: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="281"/>
-        <source>Communication groups: %1 (Bus › Communication groups)</source>
-        <translation>通信グループ: %1（バス › 通信グループ）</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
-        <location filename="../ui/main/MainWindow.cpp" line="314"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Connection lost: %1</source>
         <translation>接続が切れました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="224"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — シミュレーションバス（ハードウェアなし）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="225"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="321"/>
+        <location filename="../ui/main/MainWindow.cpp" line="226"/>
         <source>Connecting to %1…</source>
         <translation>%1 に接続中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="241"/>
         <source>Connected: %1</source>
         <translation>接続済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="348"/>
+        <location filename="../ui/main/MainWindow.cpp" line="248"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>接続済み: %1（シミュレーション、ハードウェアなし）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="376"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>ドライバが機種を通知しません。%1 は設定された機種です。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="293"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>disconnect</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="413"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
         <source>Not connected (disconnected)</source>
         <translation>未接続（切断済み）</translation>
     </message>
+</context>
+<context>
+    <name>opentop::MissingValues</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
-        <location filename="../ui/main/MainWindow.cpp" line="454"/>
-        <source>quit</source>
-        <translation>終了</translation>
+        <location filename="../model/session/MissingValues.cpp" line="18"/>
+        <source>cannot check the value: reading %1 failed: %2</source>
+        <translation>値をチェックできません: %1 の読出しに失敗しました: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
-        <source>Unwritten changes</source>
-        <translation>未書込みの変更</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="441"/>
-        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
-        <translation>
-            <numerusform>%n 件の編集がドライバに書き込まれていません。破棄して終了しますか？</numerusform>
-        </translation>
+        <location filename="../model/session/MissingValues.cpp" line="41"/>
+        <source>reading %1 failed: %2</source>
+        <translation>%1 の読出しに失敗しました: %2</translation>
     </message>
 </context>
 <context>
@@ -9241,17 +9170,17 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>ドライバ間で単位が異なります (%1)。1 台ずつ書き込んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="234"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>ドライバ %1 では許可されていません (%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="241"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>ドライバ %1 の通信グループでは許可されていません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
         <source>None of the selected drives is identified.</source>
         <translation>選択したドライバはいずれも識別されていません。</translation>
     </message>
@@ -9289,56 +9218,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>設定する(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1 を局番 %2 に書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="347"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="352"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
         <source>waiting…</source>
         <translation>待機中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1 を %n 台のドライバに書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>%n 台中 %1 台のドライバで書込み・照合完了。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="375"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
         <source>writing…</source>
         <translation>書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
         <source>Written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>書込み済み、未照合（読み戻し不可）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="396"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -10428,72 +10357,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="61"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="62"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Scan or type the serial number, then Enter</source>
-        <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="91"/>
-        <source>Cancel unit (Esc)</source>
-        <translation>試験をキャンセル (Esc)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Time</source>
-        <translation>時刻</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Serial</source>
-        <translation>シリアル</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Verdict</source>
-        <translation>判定</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Reason</source>
-        <translation>理由</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="164"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="226"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="227"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="199"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10502,169 +10401,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>open another recipe</source>
         <translation>別のレシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="231"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
-        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
-        <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
-        <source>another</source>
-        <translation>別のユニット</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
-        <source>Per-unit value</source>
-        <translation>個別値</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
-        <source>Drive %1: %2 (%3–%4 %5)</source>
-        <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
-        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
-        <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="366"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="371"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="292"/>
         <source>Unit %1 — attempt %2</source>
         <translation>製品 %1 — %2 回目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
-        <source>%1, NOT RECORDED</source>
-        <translation>%1、未記録</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="410"/>
-        <source>%1 (kept on this station)</source>
-        <translation>%1（このステーションに保管）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
-        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
-        <translation>
-            <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
-        <source>it does not answer</source>
-        <translation>データベースが応答しません</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="475"/>
-        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
-        <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="190"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="312"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="401"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10674,39 +10521,87 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::ProfileCrossCheck</name>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="49"/>
+        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
+        <translation>%1: storeWith &quot;%2&quot; はコマンドパラメータではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="52"/>
+        <source>%1: the default is not among its allowed values</source>
+        <translation>%1: 初期値が許容値に含まれていません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="56"/>
+        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
+        <translation>%1: ビットフィールド &quot;%2&quot;: function &quot;%3&quot; は読出し可能なパラメータではありません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="63"/>
+        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
+        <translation>%1: 不明なパラメータ &quot;%2&quot; に対する条件です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="65"/>
+        <source>%1: the default is not allowed when %2</source>
+        <translation>%1: %2 のときは初期値が許容されません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="75"/>
+        <source>%1 runs past address 0xFFFF</source>
+        <translation>%1 がアドレス 0xFFFF を超えています</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="78"/>
+        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
+        <translation>%1 が 0x%3 で &quot;%2&quot; と重なっています（%4 レジスタ）</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="107"/>
+        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
+        <translation>identify: &quot;%1&quot; は identify の読出し範囲内のパラメータでなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="110"/>
+        <source>identify.nameMatch is not a valid regular expression</source>
+        <translation>identify.nameMatch が正しい正規表現ではありません</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="345"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>オフセット %1 で JSON が不正です: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="349"/>
         <source>the top level must be a JSON object</source>
         <translation>最上位は JSON オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; が空です</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="371"/>
         <source>must be an object</source>
         <translation>オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="373"/>
         <source>name repeated</source>
         <translation>名前が重複しています</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="468"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="384"/>
         <source>texts: {setting:…} names no parameter (%1)</source>
         <translation>texts: {setting:…} が指すパラメータがありません (%1)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="477"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="393"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 開けません: %2</translation>
     </message>
@@ -11181,218 +11076,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="40"/>
         <source>Recipe editor</source>
         <translation>レシピエディタ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
         <source>Revision:</source>
         <translation>リビジョン:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
         <source>Product:</source>
         <translation>製品:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Description:</source>
         <translation>説明:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="72"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Position:</source>
         <translation>位置:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>バス上のドライバから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>バックアップファイルから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="114"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>名前を付けて保存…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>マスター品のバス上のドライバまたはバックアップファイルからレシピを作成するか、既存のレシピを開いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>レシピが空です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>レシピはチェックに合格しました: 保存して実行できます。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 件の問題: 修正するまでレシピを保存できません。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>レシピがチェックに合格しません（%n 件の問題）。何も保存していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 は OpenTOP のレシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1 を開きましたが、そのままでは読み込めません (%2)。保存時にチェックし、再度署名します。</translation>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
-        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>%1 から新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
-        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
-        <translation>局番 %1 はバス上の既知のドライバではありません。先にバスをスキャンしてください</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Reading the golden unit&apos;s settings…</source>
-        <translation>マスター品の設定を読出し中…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="356"/>
-        <source>machine number %1 is not on the bus</source>
-        <translation>局番 %1 はバス上にありません</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="369"/>
-        <source>cancelled: no recipe was made</source>
-        <translation>キャンセル: レシピは作成していません</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>レシピ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
-        <source>New recipe</source>
-        <translation>新規レシピ</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <source>Product name:</source>
-        <translation>製品名:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
-        <source>Golden unit&apos;s backup file</source>
-        <translation>マスター品のバックアップファイル</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="405"/>
-        <source>Backups (*.json)</source>
-        <translation>バックアップ (*.json)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
-        <source>No drives on the bus: connect and scan first.</source>
-        <translation>バス上にドライバがありません: 先に接続してスキャンしてください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
-        <source>New recipe from drives</source>
-        <translation>ドライバから新規レシピ</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="426"/>
-        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
-        <translation>マスター品のドライバの局番（検出: %1）:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="436"/>
-        <source>&quot;%1&quot; is not a machine number (1–247)</source>
-        <translation>&quot;%1&quot; は局番 (1–247) ではありません</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="445"/>
-        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>バス上のドライバから新規レシピ: 設定と試験ステップの規格値を確認してから保存してください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="456"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Save recipe</source>
         <translation>レシピを保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
         <source>Saved and signed: %1</source>
         <translation>保存・署名しました: %1</translation>
     </message>
@@ -12350,6 +12168,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RelayAutotune</name>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="65"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>運転速度は 0 より大きく、試験の速度制限値 %1 %2 より小さくなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="72"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>リレー振幅は最大出力の 0–50 % でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="75"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>開ループ: %1 %2 に必要な出力を探索中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="148"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>出力 %1 % でモータが回転しませんでした</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="180"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>運転速度には出力 %1 % が必要です: その上下に ±%2 % の余裕がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="185"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>%1 %2 付近でリレー試験中 (出力 %3 % ± %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="224"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 以内に安定した振動が得られませんでした: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="226"/>
+        <source>try a larger amplitude</source>
+        <translation>振幅を大きくしてみてください</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="259"/>
+        <source>the relay result was refused: %1</source>
+        <translation>リレー試験の結果は採用できません: %1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayTuning</name>
     <message>
         <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
@@ -13142,251 +13008,254 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>出荷検査結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>最初の不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>CSV エクスポート…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>検査成績書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
-        <source>SQLite file or postgresql://user@host/database</source>
-        <translation>SQLite ファイルまたは postgresql://user@host/database</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
-        <source>Open</source>
-        <translation>開く</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
-        <source>File…</source>
-        <translation>ファイル…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
-        <source>any; * and ? as wildcards (SN-10*)</source>
-        <translation>すべて。* と ? をワイルドカードに使用（SN-10*）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
-        <source>any</source>
-        <translation>指定なし</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
-        <source>Today</source>
-        <translation>今日</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
-        <source>Last 24 hours</source>
-        <translation>過去 24 時間</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
-        <source>Last 7 days</source>
-        <translation>過去 7 日間</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
-        <source>Last 30 days</source>
-        <translation>過去 30 日間</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
-        <source>All</source>
-        <translation>すべて</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
-        <source>Any</source>
-        <translation>指定なし</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
-        <source>Search</source>
-        <translation>検索</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
-        <source>Serial:</source>
-        <translation>シリアル:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
-        <source>Recipe:</source>
-        <translation>レシピ:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
-        <source>Station:</source>
-        <translation>ステーション:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
-        <source>Period:</source>
-        <translation>期間:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
-        <source>Verdict:</source>
-        <translation>判定:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
-        <source>Database:</source>
-        <translation>データベース:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 にはまだ結果データベースがありません: ステーションが最初の製品を記録するときに作成されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Opening the results database %1…</source>
         <translation>結果データベース %1 を開いています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Results database %1</source>
         <translation>結果データベース %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
         <source>Searching…</source>
         <translation>検索しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="344"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="292"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>製品 %n 台: 合格 %1、不合格 %2、ステーションエラー %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="372"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
         <source>no unit is selected</source>
         <translation>製品が選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="324"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
         <source>Reading unit %1…</source>
         <translation>製品 %1 を読み出しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>製品の記録をまだ読み出しています</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="382"/>
-        <source>Open results database</source>
-        <translation>結果データベースを開く</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
-        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
-        <translation>SQLite データベース (*.db *.sqlite);;すべてのファイル (*)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>Export units as CSV</source>
         <translation>製品を CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>製品 %n 台を %1 に書き込みました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="409"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
         <source>Save certificate</source>
         <translation>検査成績書を保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF ファイル (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
         <source>Certificate written to %1</source>
         <translation>検査成績書を %1 に書き込みました</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultsFilterBar</name>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="21"/>
+        <source>SQLite file or postgresql://user@host/database</source>
+        <translation>SQLite ファイルまたは postgresql://user@host/database</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="22"/>
+        <source>Open</source>
+        <translation>開く</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="23"/>
+        <source>File…</source>
+        <translation>ファイル…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="30"/>
+        <source>any; * and ? as wildcards (SN-10*)</source>
+        <translation>すべて。* と ? をワイルドカードに使用（SN-10*）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="32"/>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="34"/>
+        <source>any</source>
+        <translation>任意</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="36"/>
+        <source>Today</source>
+        <translation>今日</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="37"/>
+        <source>Last 24 hours</source>
+        <translation>過去 24 時間</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="38"/>
+        <source>Last 7 days</source>
+        <translation>過去 7 日間</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="39"/>
+        <source>Last 30 days</source>
+        <translation>過去 30 日間</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="40"/>
+        <source>All</source>
+        <translation>すべて</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="43"/>
+        <source>Any</source>
+        <translation>指定なし</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="47"/>
+        <source>Search</source>
+        <translation>検索</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="51"/>
+        <source>Serial:</source>
+        <translation>シリアル:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="52"/>
+        <source>Recipe:</source>
+        <translation>レシピ:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="53"/>
+        <source>Station:</source>
+        <translation>ステーション:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="54"/>
+        <source>Period:</source>
+        <translation>期間:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="55"/>
+        <source>Verdict:</source>
+        <translation>判定:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="63"/>
+        <source>Database:</source>
+        <translation>データベース:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="105"/>
+        <source>Open results database</source>
+        <translation>結果データベースを開く</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="106"/>
+        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
+        <translation>SQLite データベース (*.db *.sqlite);;すべてのファイル (*)</translation>
     </message>
 </context>
 <context>
@@ -14044,6 +13913,39 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialEntry</name>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="37"/>
+        <source>Scan or type the serial number, then Enter</source>
+        <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="38"/>
+        <source>Cancel unit (Esc)</source>
+        <translation>試験をキャンセル (Esc)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="95"/>
+        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
+        <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="97"/>
+        <source>another</source>
+        <translation>別のユニット</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="111"/>
+        <source>Per-unit value</source>
+        <translation>個別値</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="112"/>
+        <source>Drive %1: %2 (%3–%4 %5)</source>
+        <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SerialLineFields</name>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
@@ -14137,152 +14039,110 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="88"/>
+        <location filename="../cli/SetCommand.cpp" line="42"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>パラメータを名前で書き込み、検証・読み戻し・照合します</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="98"/>
+        <location filename="../cli/SetCommand.cpp" line="52"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>アドレスでレジスタに書き込みます: ADDR=VALUE（複数指定可。--fc 16 では VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 書込みのファンクションコード: 6（既定）または 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="63"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>エラー: 使い方: set ID NAME=VALUE...（例: set 1 spno2.accel=2.5）、または set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="121"/>
+        <location filename="../cli/SetCommand.cpp" line="75"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>エラー: &quot;%1&quot; は NAME=VALUE ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="128"/>
-        <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
-        <translation>エラー: %1 が 2 回指定されています（%2=%3 と %4）。各設定は 1 回だけ指定してください。何も書き込んでいません</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="77"/>
-        <location filename="../cli/SetCommand.cpp" line="139"/>
-        <location filename="../cli/SetCommand.cpp" line="279"/>
+        <location filename="../cli/SetCommand.cpp" line="82"/>
+        <location filename="../cli/SetCommand.cpp" line="91"/>
+        <location filename="../cli/SetCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="149"/>
-        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
-        <translation>%1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="152"/>
-        <source>%1 is read-only</source>
-        <translation>%1 は読出し専用です</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="154"/>
-        <source>%1 is a %2 command; add --yes to send it</source>
-        <translation>%1 は %2 コマンドです。送信するには --yes を付けてください</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="209"/>
-        <source>error: cannot read %1 to check the values; nothing written</source>
-        <translation>エラー: 値をチェックするための %1 を読み出せません。何も書き込んでいません</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
-        <location filename="../cli/SetCommand.cpp" line="262"/>
-        <location filename="../cli/SetCommand.cpp" line="273"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="114"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="95"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>モータの運転、リセット、消去、初期化、保存を行うコマンドと、シリアル設定ロックの設定を確定します。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="250"/>
-        <source>Add --yes to set it.</source>
-        <translation>設定するには --yes を付けてください。</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="79"/>
-        <location filename="../cli/SetCommand.cpp" line="280"/>
-        <source>nothing was written</source>
-        <translation>何も書き込んでいません</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="308"/>
-        <source>not written (interrupted)</source>
-        <translation>未書込み（中断）</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="321"/>
+        <location filename="../cli/SetCommand.cpp" line="146"/>
         <source>next: %1</source>
         <translation>次に: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="323"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>次に: opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（工場出荷時の通信設定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="373"/>
+        <location filename="../cli/SetCommand.cpp" line="199"/>
         <source>written, verified</source>
         <translation>書込み済み、照合済み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="375"/>
+        <location filename="../cli/SetCommand.cpp" line="201"/>
         <source>written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="376"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written (command, not readable)</source>
         <translation>書込み済み（コマンド、読出し不可）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="378"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。&quot;get&quot; で読み戻してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="215"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetCommand.cpp" line="222"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注: ドライバは次回の電源投入から %1 を使用します: ドライバの電源を入れ直し、新しい設定（--baud、--parity）で接続してください</translation>
     </message>
@@ -14359,6 +14219,49 @@ This moves or stops a motor: add --yes to send it.</source>
         <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1 にも書き込みました（通信グループ）。読み戻しなし: プロファイルのパラメータではありません</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SettingsWrite</name>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="29"/>
+        <source>%1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
+        <translation>%1 が 2 回指定されています（%2=%3 と %4）。各設定は 1 回だけ指定してください。何も書き込んでいません</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="76"/>
+        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
+        <translation>%1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="80"/>
+        <source>%1 is read-only</source>
+        <translation>%1 は読出し専用です</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="83"/>
+        <source>%1 is a %2 command; add --yes to send it</source>
+        <translation>%1 は %2 コマンドです。送信するには --yes を付けてください</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="105"/>
+        <source>cannot read %1 to check the values; nothing written</source>
+        <translation>値をチェックするための %1 を読み出せません。何も書き込んでいません</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="157"/>
+        <source>Add --yes to set it.</source>
+        <translation>設定するには --yes を付けてください。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="229"/>
+        <source>interrupted as it was sent</source>
+        <translation>送信中に中断</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="231"/>
+        <source>not written (interrupted)</source>
+        <translation>未書込み（中断）</translation>
     </message>
 </context>
 <context>
@@ -15480,11 +15383,74 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StationNotice</name>
+    <message numerus="yes">
+        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <source>it does not answer</source>
+        <translation>データベースが応答しません</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
+        <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationRecipe</name>
     <message>
         <location filename="../model/station/StationRecipe.cpp" line="68"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>このレシピは個別値を CSV ファイルから取得します: 先に CSV ファイルを開いてください</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationResults</name>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="63"/>
+        <source>opening the results database</source>
+        <translation>結果データベースを開いています</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="65"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>接続できません（%1）。自動で再試行中</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="66"/>
+        <source>no results database</source>
+        <translation>結果データベースがありません</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="72"/>
+        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
+        <translation>製品 %1 の結果（%2）はまだ結果データベースに記録されていません。記録されるまで試験しません。ステーションが自動で再試行します（%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="77"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>結果データベースを開いています。しばらくしてからもう一度お試しください</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="79"/>
+        <source>the results database is not open; nothing is tested unless it is recorded</source>
+        <translation>結果データベースが開いていません。記録できない状態では試験しません</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="80"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>結果データベースに接続できません（%1）。記録できない状態では試験しません。ステーションが自動で再試行します。</translation>
     </message>
 </context>
 <context>
@@ -15582,6 +15548,109 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StepMeasure</name>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="85"/>
+        <source>%1: the drive stopped answering: %2</source>
+        <translation>%1: ドライバが応答しなくなりました: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="93"/>
+        <source>%1: the drive raised an alarm while running</source>
+        <translation>%1: 運転中にドライバでアラームが発生しました</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="113"/>
+        <source>%1: %2 %3</source>
+        <translation>%1: %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="132"/>
+        <source>%1: the drive has no speed to wait for</source>
+        <translation>%1: 待機する速度がドライバにありません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="155"/>
+        <source>time to reach speed</source>
+        <translation>速度到達時間</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="159"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="167"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="168"/>
+        <source>unknown</source>
+        <translation>不明</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="169"/>
+        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
+        <translation>%1: %5 s 以内に %2 %3 ±%4 %3 に到達しませんでした（最終読出し値 %6 %3）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="170"/>
+        <source>its target</source>
+        <translation>目標値</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="205"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="220"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="240"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="301"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="215"/>
+        <source>%1: the drive reports no alarms</source>
+        <translation>%1: ドライバはアラームなし</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="225"/>
+        <source>alarms raised</source>
+        <translation>発生したアラーム</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="227"/>
+        <source>%1: the drive has an alarm</source>
+        <translation>%1: ドライバでアラームが発生しています</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="234"/>
+        <source>%1: nothing to read</source>
+        <translation>%1: 読み出すものがありません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="248"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="251"/>
+        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
+        <translation>%1: %2 の読出し値は &quot;%3&quot;、期待値は &quot;%4&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="259"/>
+        <source>%1: %2 reads %3 %4, %5</source>
+        <translation>%1: %2 の読出し値 %3 %4、%5</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>time to stop</source>
+        <translation>停止時間</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="303"/>
+        <source>%1: stopped after %2 s, allowed at most %3 s</source>
+        <translation>%1: %2 s 後に停止、許容は最大 %3 s</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StepMetrics</name>
     <message>
         <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
@@ -15592,6 +15661,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
         <source>too few samples after the step (%1)</source>
         <translation>ステップ後のサンプルが少なすぎます (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTest</name>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="39"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>ステップ試験はある速度から別の速度へ正転で行います: 開始速度と目標速度は異なる値で、0 以上でなければなりません</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="47"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2 は試験の速度制限値 %3 %2 を超えています</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="55"/>
+        <source>Running to %1 %2</source>
+        <translation>%1 %2 まで運転中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="88"/>
+        <source>Step to %1 %2</source>
+        <translation>%1 %2 へステップ</translation>
     </message>
 </context>
 <context>
@@ -16301,85 +16393,85 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>オブジェクト 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="26"/>
         <source>Cannot open %1: %2</source>
         <translation>%1 を開けません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 が開いていません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <source>send failed</source>
         <translation>送信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>別の応答が続きました: この応答は以前の要求に対するものの可能性があります</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>ドライブ自身の通信フォーマットにはシリアルポートが必要です。Modbus TCP ゲートウェイは回線を自分で設定します</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>回線を %1 に切り替えられません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>局番 %1 からの応答（期待値 %2）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
         <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>応答が不完全です</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
         <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
         <source> (connection closed)</source>
         <translation> (接続切断)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <source>stale bytes discarded before sending</source>
         <translation>送信前に残留バイトを破棄しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
         <source>late bytes discarded after an error</source>
         <translation>エラー後に遅延バイトを破棄しました</translation>
     </message>
@@ -17437,6 +17529,87 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuningDrive</name>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="50"/>
+        <source>a tuning test is already running</source>
+        <translation>チューニング試験がすでに実行中です</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="88"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>ドライバの設定を読出し中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="98"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>ドライバの設定を読み出せませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="139"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>ドライバが閉ループ速度モードではありません: 先に %1 (%2) を %3 に設定してください</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="141"/>
+        <source> or </source>
+        <translation> または </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="146"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>通信断停止時間を %1 s に設定中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="201"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>ドライバが応答しなくなりました: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="221"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>速度 %1 %2 が試験の制限値 %3 %2 を超えました: 即時停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="228"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>電流 %1 A が試験の制限値 %2 A を超えました: 即時停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="234"/>
+        <source>cancelled</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="271"/>
+        <source>Stopping the motor</source>
+        <translation>モータを停止中</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="303"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>モータ停止（確認済み）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="304"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>モータの停止を確認できません: モータを点検してください</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningDriveSettings</name>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="53"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>速度モードを読み出せませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="56"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>ドライバが閉ループ速度モードではありません（現在: %1）。先に設定ページで閉ループモードを選択してください。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::TuningGains</name>
     <message>
         <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
@@ -17600,125 +17773,105 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
-        <source>STOP</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
-        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
-        <translation>実行中の試験を中止します: モータを停止し、停止を確認します</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="53"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
         <source>Step test</source>
         <translation>ステップ試験</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="54"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Relay autotune</source>
         <translation>リレーオートチューニング</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="112"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>準備完了。試験を確認するまでモータは動きません。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
-        <source>Could not read the speed mode: %1</source>
-        <translation>速度モードを読み出せませんでした: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
-        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
-        <translation>ドライバが閉ループ速度モードではありません（現在: %1）。先に設定ページで閉ループモードを選択してください。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="191"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>制限値: %1 %2、%3。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>no current limit</source>
         <translation>電流制限なし</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="208"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1 のモータが現在の速度モードで %2 から %3 %4 まで約 %5 s 運転し、その後停止します。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Run</source>
         <translation>実行</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="229"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1 のモータが開ループ（速度ループ無効）で %2 %3 付近を運転し、出力を ±%4 % で切り替えます。最大 %5 s 後に停止します。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="252"/>
         <source>Stop command sent.</source>
         <translation>停止コマンドを送信しました。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="253"/>
         <source>Stop command failed: %1</source>
         <translation>停止コマンドが失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="263"/>
         <source>Stopping…</source>
         <translation>停止中…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="277"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>実行 %1: %2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="296"/>
         <source>Step test done.</source>
         <translation>ステップ試験が完了しました。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="297"/>
         <source>Step test ended: %1</source>
         <translation>ステップ試験終了: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="302"/>
         <source>The test was stopped</source>
         <translation>試験が停止されました</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="333"/>
         <source>Autotune ended: %1</source>
         <translation>オートチューニング終了: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="335"/>
         <source>The autotune was stopped</source>
         <translation>オートチューニングが停止されました</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="344"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>予測: %1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>オートチューニング完了: 提案値 %1。採用するとドライバに書き込みます。</translation>
     </message>
@@ -17783,194 +17936,61 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
-    <name>opentop::TuningRunner</name>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
-        <source>a tuning test is already running</source>
-        <translation>チューニング試験がすでに実行中です</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
-        <source>Reading the drive&apos;s settings</source>
-        <translation>ドライバの設定を読出し中</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
-        <source>could not read the drive&apos;s settings: %1</source>
-        <translation>ドライバの設定を読み出せませんでした: %1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
-        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
-        <translation>ドライバが閉ループ速度モードではありません: 先に %1 (%2) を %3 に設定してください</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
-        <source> or </source>
-        <translation> または </translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
-        <source>Setting the communication-loss braking time to %1 s</source>
-        <translation>通信断停止時間を %1 s に設定中</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
-        <source>the drive stopped answering: %1</source>
-        <translation>ドライバが応答しなくなりました: %1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
-        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
-        <translation>速度 %1 %2 が試験の制限値 %3 %2 を超えました: 即時停止</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
-        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
-        <translation>電流 %1 A が試験の制限値 %2 A を超えました: 即時停止</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
-        <source>cancelled</source>
-        <translation>キャンセル</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
-        <source>Stopping the motor</source>
-        <translation>モータを停止中</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
-        <source>motor stopped (confirmed)</source>
-        <translation>モータ停止（確認済み）</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
-        <source>the motor could not be confirmed stopped: check it</source>
-        <translation>モータの停止を確認できません: モータを点検してください</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
-        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
-        <translation>ステップ試験はある速度から別の速度へ正転で行います: 開始速度と目標速度は異なる値で、0 以上でなければなりません</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
-        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
-        <translation>%1 %2 は試験の速度制限値 %3 %2 を超えています</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
-        <source>Running to %1 %2</source>
-        <translation>%1 %2 まで運転中</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
-        <source>Step to %1 %2</source>
-        <translation>%1 %2 へステップ</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
-        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
-        <translation>運転速度は 0 より大きく、試験の速度制限値 %1 %2 より小さくなければなりません</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
-        <source>the relay amplitude must be 0–50 % of full output</source>
-        <translation>リレー振幅は最大出力の 0–50 % でなければなりません</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
-        <source>Open loop: finding the output for %1 %2</source>
-        <translation>開ループ: %1 %2 に必要な出力を探索中</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
-        <source>the motor did not turn at %1 % output</source>
-        <translation>出力 %1 % でモータが回転しませんでした</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
-        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
-        <translation>運転速度には出力 %1 % が必要です: その上下に ±%2 % の余裕がありません</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
-        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
-        <translation>%1 %2 付近でリレー試験中 (出力 %3 % ± %4 %)</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
-        <source>no steady oscillation within %1 s: %2</source>
-        <translation>%1 s 以内に安定した振動が得られませんでした: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
-        <source>try a larger amplitude</source>
-        <translation>振幅を大きくしてみてください</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
-        <source>the relay result was refused: %1</source>
-        <translation>リレー試験の結果は採用できません: %1</translation>
-    </message>
-</context>
-<context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save CSV…</source>
         <translation>CSV を保存…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="39"/>
         <source>Save PNG…</source>
         <translation>PNG を保存…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>選択した実行結果を保存します: サンプル、ゲイン、指標</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>Saves the chart as it is shown</source>
         <translation>表示どおりにグラフを保存します</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="46"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>実線: 速度 · 点線: 指令 · 一点鎖線: 電流（右軸） · 破線: 予測速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="220"/>
         <source>no run to save</source>
         <translation>保存する実行結果がありません</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="233"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="237"/>
         <source>Save run as CSV</source>
         <translation>実行結果を CSV で保存</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="234"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="242"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Save chart as PNG</source>
         <translation>グラフを PNG で保存</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="243"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 画像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Could not write %1.</source>
         <translation>%1 に書き込めませんでした。</translation>
     </message>
@@ -17991,6 +18011,19 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1: プロファイルのチューニングセクションには periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode、およびフィードバックパラメータが既知の closedLoopModes が必要です</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningStatusRow</name>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="12"/>
+        <source>STOP</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="17"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>実行中の試験を中止します: モータを停止し、停止を確認します</translation>
     </message>
 </context>
 <context>
@@ -18032,6 +18065,39 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::UnitLog</name>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Time</source>
+        <translation>時刻</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Serial</source>
+        <translation>シリアル</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Reason</source>
+        <translation>理由</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <source>%1, NOT RECORDED</source>
+        <translation>%1、未記録</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（このステーションに保管）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
@@ -18062,6 +18128,24 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>JSON ではありません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UnitStartGate</name>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="45"/>
+        <source>cancelled before it started</source>
+        <translation>開始前に取り消されました</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="80"/>
+        <source>not connected to a bus</source>
+        <translation>バスに接続されていません</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="85"/>
+        <source>a drive of the station is not safe: %1</source>
+        <translation>ステーションのドライブが安全ではありません: %1</translation>
     </message>
 </context>
 <context>
@@ -18201,104 +18285,106 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
-        <source>depends on %1, which is not known yet</source>
-        <translation>%1 に依存しますが、まだ不明です</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
-        <source>text of up to %1 characters</source>
-        <translation>最大 %1 文字のテキスト</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
-        <source> or </source>
-        <translation> または </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="63"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1: %2 は推奨範囲 %3 外です。許容される値のため書き込みます</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
-        <source>, or </source>
-        <translation>、または </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
-        <source>any value</source>
-        <translation>任意の値</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="80"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機種が不明なため、値は %1 に適合する必要があります。機種を指定するとその機種の範囲を使用します)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="90"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 許容値が依存する %2 をまだ読み出していません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="95"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 値がレジスタの範囲外です。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="107"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2 は許可されていません。許容値: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="119"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: %2 レジスタが必要ですが、%3 レジスタでした</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="149"/>
         <source>%1 is text, not a number</source>
         <translation>%1 はテキストで、数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="162"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2 は %3 %4 の刻みより細かい値です。許容値: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="195"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 最大 %2 文字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="200"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 印字可能な ASCII 文字のみ使用できます</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="210"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 値が指定されていません。許容値: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="250"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot; は %3 が %4 の場合のみ使用できます。現在の許容値: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="263"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="283"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot; は有効な値ではありません。許容値: %3</translation>
     </message>
+</context>
+<context>
+    <name>opentop::ValueFormat</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="45"/>
+        <source> or </source>
+        <translation> または </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="65"/>
+        <source>depends on %1, which is not known yet</source>
+        <translation>%1 に依存しますが、まだ不明です</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="67"/>
+        <source>text of up to %1 characters</source>
+        <translation>最大 %1 文字のテキスト</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="73"/>
+        <source>, or </source>
+        <translation>、または </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="74"/>
+        <source>any value</source>
+        <translation>任意の値</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="81"/>
         <source>(invalid)</source>
         <translation>（無効）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="92"/>
         <source>unknown code %1</source>
         <translation>不明なコード %1</translation>
     </message>

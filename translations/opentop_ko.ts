@@ -260,187 +260,142 @@
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="38"/>
         <source>top level</source>
         <translation>최상위</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="55"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="41"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot;는 1이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="66"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot;는 소문자 ID여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="60"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity는 N, E, O 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="78"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial: baud는 1200–115200, stopBits는 1 또는 2여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats: &quot;%1&quot;은(는) 8N1, 8E1 같은 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="80"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats에 기본 형식 %1이(가) 있어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="98"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="84"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs는 0–60000이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits: maxReadRegisters는 1–125, maxWriteRegisters는 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="113"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="99"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits: slaves는 1–247 범위여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1]에는 id, model, label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="116"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]: id &quot;%2&quot;가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="141"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="127"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1]에는 고유한 id와 label이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="152"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="138"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1]에는 function 3 또는 4와 first ≤ last가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1 has no name</source>
         <translation>%1에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="198"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="184"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1: reset은 %2 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="187"/>
         <source>%1: code %2 repeated</source>
         <translation>%1: 코드 %2가 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
-        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
-        <translation>%1: storeWith &quot;%2&quot;은(는) 명령 파라미터가 아닙니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
-        <source>%1: the default is not among its allowed values</source>
-        <translation>%1: 기본값이 허용 값에 포함되지 않습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
-        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
-        <translation>%1: 비트 필드 &quot;%2&quot;: 기능 &quot;%3&quot;은(는) 읽을 수 있는 파라미터가 아닙니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
-        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
-        <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;에 대한 조건</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
-        <source>%1: the default is not allowed when %2</source>
-        <translation>%1: %2일 때는 기본값이 허용되지 않습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
-        <source>%1 runs past address 0xFFFF</source>
-        <translation>%1이(가) 주소 0xFFFF를 넘어갑니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
-        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
-        <translation>%1이(가) 0x%3에서 &quot;%2&quot;와(과) 겹칩니다(레지스터 %4개)</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
-        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
-        <translation>identify: &quot;%1&quot;은(는) identify 읽기 범위 안의 파라미터여야 합니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
-        <source>identify.nameMatch is not a valid regular expression</source>
-        <translation>identify.nameMatch가 올바른 정규식이 아닙니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="203"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1은(는) 파라미터 이름, 이름 목록 또는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="240"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1: &quot;%2&quot;에 비트 필드 &quot;%3&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1: %2은(는) &quot;%3&quot;에 쓸 수 있는 값이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="264"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs에는 &quot;selected&quot; 역할이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="280"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1에는 &quot;selected&quot;와 &quot;maxSeconds&quot;가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="283"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1: &quot;selected&quot; %2은(는) &quot;selected&quot; 역할의 값이 아니거나 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="288"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1: &quot;maxSeconds&quot;는 0보다 크고 600 이하여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="320"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1: &quot;light&quot;는 %2 중 하나여야 하며 각각 한 번만 쓸 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="323"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1: &quot;colour&quot;는 #rrggbb 형식이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="325"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1: &quot;label&quot;과 &quot;meaning&quot;은 비어 있으면 안 됩니다</translation>
     </message>
@@ -453,6 +408,16 @@
         <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>도달하지 않음</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <source>error: %1</source>
+        <translation>오류: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <source>nothing was written</source>
+        <translation>아무것도 쓰지 않았습니다</translation>
     </message>
 </context>
 <context>
@@ -874,6 +839,134 @@
     </message>
 </context>
 <context>
+    <name>opentop::AlarmRecordsView</name>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Code</source>
+        <translation>코드</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Panel</source>
+        <translation>패널</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Name</source>
+        <translation>이름</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Cleared by</source>
+        <translation>해제 방법</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="67"/>
+        <source>Cause and remedy</source>
+        <translation>원인 및 조치</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="68"/>
+        <source>Communication error register</source>
+        <translation>통신 오류 레지스터</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="75"/>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="115"/>
+        <source>Select a record to see its cause and remedy.</source>
+        <translation>원인과 조치를 보려면 기록을 선택하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="76"/>
+        <source>Not read yet.</source>
+        <translation>아직 읽지 않음.</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="126"/>
+        <source>This drive has no communication error register.</source>
+        <translation>이 드라이버에는 통신 오류 레지스터가 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="128"/>
+        <source>%1: could not be read.</source>
+        <translation>%1: 읽을 수 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="130"/>
+        <source>%1: no error (0).</source>
+        <translation>%1: 오류 없음(0).</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="133"/>
+        <source>%1: %2, not a known code.</source>
+        <translation>%1: %2, 알 수 없는 코드.</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="135"/>
+        <source>%1: %2 %3
+Cause: %4
+Remedy: %5</source>
+        <translation>%1: %2 %3
+원인: %4
+조치: %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No alarm records</source>
+        <translation>알람 기록 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No warning records</source>
+        <translation>경고 기록 없음</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="153"/>
+        <source>%1: could not be read: %2</source>
+        <translation>%1: 읽을 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="156"/>
+        <source>%1: %2 of %3 records, newest first</source>
+        <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="167"/>
+        <source>unknown code</source>
+        <translation>알 수 없는 코드</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="196"/>
+        <source>Record %1: code %2 is not in the %3 table.</source>
+        <translation>기록 %1: 코드 %2이(가) %3 표에 없습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="201"/>
+        <source>%1 %2 (record %3)</source>
+        <translation>%1 %2 (기록 %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="203"/>
+        <source>Cause: %1</source>
+        <translation>원인: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="205"/>
+        <source>Remedy: %1</source>
+        <translation>조치: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="207"/>
+        <source>To clear: %1</source>
+        <translation>해제 방법: %1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AlarmsCommand</name>
     <message>
         <location filename="../cli/AlarmsCommand.cpp" line="164"/>
@@ -969,298 +1062,173 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="35"/>
         <source>&amp;Re-read</source>
         <translation>다시 읽기(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="36"/>
         <source>Reset &amp;alarm…</source>
         <translation>알람 리셋(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="62"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="37"/>
         <source>&amp;Clear records…</source>
         <translation>기록 삭제(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="41"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>국번 %1의 알람과 경고 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>#</source>
-        <translation>#</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Code</source>
-        <translation>코드</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Panel</source>
-        <translation>패널</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Name</source>
-        <translation>이름</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Cleared by</source>
-        <translation>해제 방법</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="111"/>
-        <source>Cause and remedy</source>
-        <translation>원인 및 조치</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="112"/>
-        <source>Communication error register</source>
-        <translation>통신 오류 레지스터</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>알람 리셋 명령을 보냅니다. 알람이 해제되었는지, 전원 재투입으로만 해제되는지 알려줍니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>드라이버에 보관된 알람·경고 기록을 삭제합니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="132"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="303"/>
-        <source>Select a record to see its cause and remedy.</source>
-        <translation>원인과 조치를 보려면 기록을 선택하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
-        <source>Not read yet.</source>
-        <translation>아직 읽지 않음.</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="135"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>이 드라이버는 알람·경고 기록을 보관하지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="165"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
         <source>Alarm state: %1</source>
         <translation>알람 상태: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
         <source>Reading the records…</source>
         <translation>기록을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="277"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="280"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="284"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
         <source>Could not be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
-        <source>This drive has no communication error register.</source>
-        <translation>이 드라이버에는 통신 오류 레지스터가 없습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
-        <source>%1: could not be read.</source>
-        <translation>%1: 읽을 수 없습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
-        <source>%1: no error (0).</source>
-        <translation>%1: 오류 없음(0).</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
-        <source>%1: %2, not a known code.</source>
-        <translation>%1: %2, 알 수 없는 코드.</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="319"/>
-        <source>%1: %2 %3
-Cause: %4
-Remedy: %5</source>
-        <translation>%1: %2 %3
-원인: %4
-조치: %5</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No alarm records</source>
-        <translation>알람 기록 없음</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No warning records</source>
-        <translation>경고 기록 없음</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="337"/>
-        <source>%1: could not be read: %2</source>
-        <translation>%1: 읽을 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="340"/>
-        <source>%1: %2 of %3 records, newest first</source>
-        <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="351"/>
-        <source>unknown code</source>
-        <translation>알 수 없는 코드</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
-        <source>Record %1: code %2 is not in the %3 table.</source>
-        <translation>기록 %1: 코드 %2이(가) %3 표에 없습니다.</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
-        <source>%1 %2 (record %3)</source>
-        <translation>%1 %2 (기록 %3)</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
-        <source>Cause: %1</source>
-        <translation>원인: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
-        <source>Remedy: %1</source>
-        <translation>조치: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="391"/>
-        <source>To clear: %1</source>
-        <translation>해제 방법: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="420"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
         <source>Writes: %1</source>
         <translation>쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>원인이 제거되었으면 발생 중인 알람을 해제합니다. 일부 알람은 전원 재투입으로만 해제되며, 결과에 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="428"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
         <source>Reset alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="427"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>국번 %1에 알람 리셋 명령을 보내시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="435"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Sending the alarm reset…</source>
         <translation>알람 리셋을 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="441"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="444"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>드라이버 전원을 끄고 5 s 기다린 뒤 다시 켜십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (기록 %2건)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>the alarm and warning records</source>
         <translation>알람·경고 기록</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>Clear records</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source>Erase %1 of machine %2?</source>
         <translation>국번 %2의 %1을(를) 삭제하시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source> and </source>
         <translation> 및 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="461"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>삭제한 기록은 복원할 수 없습니다. 쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="463"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Erase</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>Erasing the records…</source>
         <translation>기록을 삭제하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="482"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="484"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -2028,6 +1996,27 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusLeaving</name>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="68"/>
+        <location filename="../ui/main/BusLeaving.cpp" line="88"/>
+        <source>quit</source>
+        <translation>종료</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="77"/>
+        <source>Unwritten changes</source>
+        <translation>쓰지 않은 변경 사항</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/main/BusLeaving.cpp" line="78"/>
+        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
+        <translation>
+            <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusListMenu</name>
     <message>
         <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
@@ -2482,22 +2471,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="223"/>
+        <location filename="../model/bus/BusScanner.cpp" line="152"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their address switches (%3)</source>
         <translation>손상된 응답 2회(%1): 두 드라이버가 국번 %2을(를) 함께 쓰고 있을 가능성이 큽니다. 주소 스위치를 확인하십시오(%3)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="229"/>
+        <location filename="../model/bus/BusScanner.cpp" line="158"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>응답은 있지만 일치하는 장치 프로파일이 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="247"/>
+        <location filename="../model/bus/BusScanner.cpp" line="171"/>
         <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
         <translation>응답은 있지만 식별 읽기에 응답이 없습니다(%1). %2번 더 물어도 마찬가지입니다: 직접 추가하거나 대기 시간을 늘려 다시 스캔하십시오</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="333"/>
+        <location filename="../model/bus/BusScanner.cpp" line="243"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>처음에 늦게 응답했습니다(%1 ms 대기 후). 대기 시간을 늘리면 이 버스의 스캔이 안정됩니다</translation>
     </message>
@@ -3961,6 +3950,14 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::ConnectionViews</name>
+    <message>
+        <location filename="../ui/main/ConnectionViews.cpp" line="80"/>
+        <source>Communication groups: %1 (Bus › Communication groups)</source>
+        <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DbuSimDevice</name>
     <message>
         <location filename="../sim/DbuSimDevice.cpp" line="340"/>
@@ -4518,41 +4515,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="91"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="93"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="95"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="96"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1은(는) 설정이 아니라 명령입니다. 명령은 요청할 때 하나씩 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="249"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="260"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="272"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="252"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="263"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="275"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="283"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>쓰기 %n건 실패: %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>쓰기는 했지만, 받은 모든 드라이버에서 확인되지는 않았습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="292"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>값 %n개 쓰기 및 검증 완료</numerusform>
@@ -4562,40 +4559,30 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="82"/>
+        <location filename="../model/session/DeviceSession.cpp" line="83"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
         <location filename="../model/session/BlockReader.cpp" line="50"/>
-        <location filename="../model/session/DeviceSession.cpp" line="91"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1은(는) 읽을 수 없습니다(쓰기 전용 명령)</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
-        <source>cannot check the value: reading %1 failed: %2</source>
-        <translation>값을 검사할 수 없습니다: %1 읽기 실패: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="156"/>
+        <location filename="../model/session/DeviceSession.cpp" line="137"/>
         <source>%1 is read-only</source>
         <translation>%1은(는) 읽기 전용입니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="162"/>
+        <location filename="../model/session/DeviceSession.cpp" line="143"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1은(는) %2 명령입니다. 명시적으로 요청할 때만 보냅니다</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="192"/>
+        <location filename="../model/session/DeviceSession.cpp" line="173"/>
         <source>%1 cannot be checked: %2</source>
         <translation>%1을(를) 검사할 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="227"/>
-        <source>reading %1 failed: %2</source>
-        <translation>%1 읽기 실패: %2</translation>
     </message>
     <message>
         <location filename="../model/session/BlockWriter.cpp" line="28"/>
@@ -4608,12 +4595,12 @@ Configuration changes written but not stored are discarded.</source>
         <translation>응답이 너무 짧음</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="291"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>written, but reading it back failed: %1</source>
         <translation>썼지만 다시 읽기에 실패했습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="300"/>
+        <location filename="../model/session/DeviceSession.cpp" line="263"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>검증 실패: %1을(를) 썼지만 장치 값은 %2입니다</translation>
     </message>
@@ -4814,119 +4801,119 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::DriveStatusPoller</name>
+    <name>opentop::DriveStatus</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="8"/>
         <source>not polled yet</source>
         <translation>아직 폴링 안 함</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="10"/>
         <source>online</source>
         <translation>온라인</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="12"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>응답 없음(연속 %n회 폴링)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="13"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>통신 오류(연속 %n회)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="19"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="31"/>
         <source>Status not known yet</source>
         <translation>상태 아직 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="21"/>
         <source>No answer: %1</source>
         <translation>응답 없음: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
-        <source>Alarm %1 %2</source>
-        <translation>알람 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
-        <source>Alarm %1h (not in the alarm table)</source>
-        <translation>알람 %1h (알람 표에 없음)</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
-        <source>Alarm active</source>
-        <translation>알람 발생 중</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="24"/>
         <source>Communication error: %1</source>
         <translation>통신 오류: %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="34"/>
+        <source>Alarm %1 %2</source>
+        <translation>알람 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="36"/>
+        <source>Alarm %1h (not in the alarm table)</source>
+        <translation>알람 %1h (알람 표에 없음)</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="38"/>
+        <source>Alarm active</source>
+        <translation>알람 발생 중</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="42"/>
         <source>Running</source>
         <translation>운전 중</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CCW</source>
         <translation>CCW 운전 중</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CW</source>
         <translation>CW 운전 중</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="45"/>
         <source>Stopped, no alarm</source>
         <translation>정지, 알람 없음</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="52"/>
         <source>grey</source>
         <translation>회색</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="54"/>
         <source>green</source>
         <translation>초록</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="56"/>
         <source>orange</source>
         <translation>주황</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="58"/>
         <source>sky blue</source>
         <translation>하늘색</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="60"/>
         <source>red</source>
         <translation>빨강</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="62"/>
         <source>purple</source>
         <translation>보라</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="64"/>
         <source>blue</source>
         <translation>파랑</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="101"/>
         <source>%1; %2</source>
         <translation>%1; %2</translation>
     </message>
@@ -5233,117 +5220,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="53"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="56"/>
         <source>identifying</source>
         <translation>식별 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
         <source>no drive answers at machine number %1</source>
         <translation>국번 %1에서 응답하는 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>국번 %1의 드라이버가 식별되지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="90"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="99"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>%1 드라이버입니다. 레시피에는 %2 드라이버가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>펌웨어 %1, 레시피가 허용하는 펌웨어: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="95"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="104"/>
         <source>unknown</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
         <source>no profile for the family %1</source>
         <translation>제품군 %1의 프로파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="183"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>cannot read whether the motor runs or an alarm is active: %1</source>
         <translation>모터 운전 여부나 알람 발생 여부를 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="184"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="194"/>
         <source>no answer</source>
         <translation>응답 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="191"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>its motor was running before the test</source>
         <translation>검사 전에 모터가 운전 중이었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="192"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>검사 전에 모터가 이미 운전 중입니다(중단된 검사가 남긴 상태?). 아무것도 쓰지 않았습니다: 먼저 정지하십시오(전체 정지 또는 드라이버에서)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="199"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
         <translation>검사 전에 알람이 발생해 있습니다(이전 제품이 남긴 알람?). 아무것도 쓰지 않았습니다: 알람을 리셋하고 다시 검사하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="219"/>
         <source>writing the settings</source>
         <translation>설정 쓰는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="251"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="258"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="224"/>
         <source>writing the settings: %1</source>
         <translation>설정 쓰는 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
         <source>reading every setting back</source>
         <translation>모든 설정을 다시 읽는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="281"/>
-        <source>%1 cannot be read back: %2</source>
-        <translation>%1을(를) 다시 읽을 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="287"/>
-        <source>%1 does not keep its value: set to %2, reads %3</source>
-        <translation>%1이(가) 값을 유지하지 않습니다: %2(으)로 설정했지만 %3(으)로 읽힘</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="291"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
         <source>verifying the settings: %1</source>
         <translation>설정 검증 중: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="305"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="252"/>
         <source>arming the communication-loss stop</source>
         <translation>통신 두절 정지를 설정하는 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="319"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>testing</source>
         <translation>검사 중</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="323"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
         <source>step %1 of %2: %3</source>
         <translation>단계 %1/%2: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="386"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="335"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
@@ -6227,196 +6199,155 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="58"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>사용자가 없는 스테이션에서 검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="107"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>레시피 규칙으로 막힌 재검사(이미 합격한 시리얼, 또는 검사 횟수를 다 쓴 시리얼)를 기술자가 허가합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="144"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="113"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="172"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2은(는) %3을(를) 허용합니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="174"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>any %1 variant</source>
         <translation>모든 %1 기종</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="183"/>
+        <location filename="../cli/EolRunCommand.cpp" line="147"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: 레시피에 국번 %2의 위치가 없습니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="197"/>
+        <location filename="../cli/EolRunCommand.cpp" line="161"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="212"/>
+        <location filename="../cli/EolRunCommand.cpp" line="176"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="243"/>
+        <location filename="../cli/EolRunCommand.cpp" line="207"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="247"/>
+        <location filename="../cli/EolRunCommand.cpp" line="211"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="252"/>
+        <location filename="../cli/EolRunCommand.cpp" line="216"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="278"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>error: %1; nothing was sent</source>
         <translation>오류: %1. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="280"/>
+        <location filename="../cli/EolRunCommand.cpp" line="307"/>
         <source>a technician allows it with --retest</source>
         <translation>기술자가 --retest로 허가할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="284"/>
+        <location filename="../cli/EolRunCommand.cpp" line="259"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>참고: %1. --retest의 허가로 다시 검사합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="304"/>
+        <location filename="../cli/EolRunCommand.cpp" line="268"/>
         <source>station: %1</source>
         <translation>스테이션: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="313"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="348"/>
-        <location filename="../cli/EolRunCommand.cpp" line="369"/>
-        <source>drive %1</source>
-        <translation>드라이버 %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>ok</source>
-        <translation>정상</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>FAIL</source>
-        <translation>불합격</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="392"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="423"/>
-        <source>rev. %1</source>
-        <translation>개정 %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
-        <source>attempt %1</source>
-        <translation>%1회차 검사</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="432"/>
-        <source>the result was NOT recorded: %1</source>
-        <translation>결과가 기록되지 않았습니다: %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="434"/>
-        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
-        <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="439"/>
-        <source>WARNING: motor not confirmed stopped: %1</source>
-        <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
 </context>
 <context>
@@ -6466,6 +6397,68 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
 </context>
 <context>
+    <name>opentop::EolRunOutput</name>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="85"/>
+        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <source>drive %1</source>
+        <translation>드라이버 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>ok</source>
+        <translation>정상</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>FAIL</source>
+        <translation>불합격</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <source>rev. %1</source>
+        <translation>개정 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <source>attempt %1</source>
+        <translation>%1회차 검사</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <source>the result was NOT recorded: %1</source>
+        <translation>결과가 기록되지 않았습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <source>WARNING: motor not confirmed stopped: %1</source>
+        <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolSettingsWriter</name>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="69"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="95"/>
+        <source>%1 cannot be read back: %2</source>
+        <translation>%1을(를) 다시 읽을 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="101"/>
+        <source>%1 does not keep its value: set to %2, reads %3</source>
+        <translation>%1이(가) 값을 유지하지 않습니다: %2(으)로 설정했지만 %3(으)로 읽힘</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolSpeedChart</name>
     <message>
         <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
@@ -6492,259 +6485,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="141"/>
-        <source>no results database</source>
-        <translation>결과 데이터베이스 없음</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
-        <source>opening the results database</source>
-        <translation>결과 데이터베이스를 여는 중</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="140"/>
-        <source>NOT REACHABLE (%1); trying again by itself</source>
-        <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="149"/>
+        <location filename="../model/station/EolStation.cpp" line="120"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="153"/>
+        <location filename="../model/station/EolStation.cpp" line="124"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="158"/>
-        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
-        <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="165"/>
-        <source>the results database is being opened; try again in a moment</source>
-        <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="167"/>
-        <source>the results database is not open; nothing is tested unless it is recorded</source>
-        <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="169"/>
-        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
-        <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: 시리얼 번호 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="184"/>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="142"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="146"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="151"/>
         <source>no serial number</source>
         <translation>시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="221"/>
-        <source>a drive of the station is not safe: %1</source>
-        <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="256"/>
+        <location filename="../model/station/EolStation.cpp" line="182"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>시리얼 %1 재시험, %2 허가: %3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="292"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>no unit was started yet</source>
         <translation>아직 검사를 시작한 제품이 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="304"/>
-        <source>cancelled before it started</source>
-        <translation>시작 전에 취소됨</translation>
     </message>
 </context>
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
-        <source>allowed %1–%2 %3</source>
-        <translation>허용 %1–%2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
-        <source>allowed at most %1 %2</source>
-        <translation>허용 최대 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
-        <source>allowed at least %1 %2</source>
-        <translation>허용 최소 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="118"/>
         <source>step %1 (%2)</source>
         <translation>단계 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="131"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="124"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="148"/>
         <source>the drive&apos;s session ended</source>
         <translation>드라이버 세션이 끝났습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="204"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="224"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="236"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="197"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="215"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="225"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="216"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="209"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1: 드라이버가 통신 우선이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="266"/>
-        <source>%1: the drive stopped answering: %2</source>
-        <translation>%1: 드라이버가 응답하지 않습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="274"/>
-        <source>%1: the drive raised an alarm while running</source>
-        <translation>%1: 운전 중 드라이버에서 알람이 발생했습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="297"/>
-        <source>%1: %2 %3</source>
-        <translation>%1: %2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="316"/>
-        <source>%1: the drive has no speed to wait for</source>
-        <translation>%1: 드라이버에 기다릴 속도가 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
-        <source>time to reach speed</source>
-        <translation>속도 도달 시간</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="353"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="354"/>
-        <source>unknown</source>
-        <translation>알 수 없음</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="355"/>
-        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
-        <translation>%1: %5 s 이내에 %2 %3 ±%4 %3에 도달하지 못했습니다(마지막 읽은 값 %6 %3)</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="356"/>
-        <source>its target</source>
-        <translation>목표 속도</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="413"/>
-        <source>%1 could not be read</source>
-        <translation>%1을(를) 읽을 수 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="423"/>
-        <source>%1 %2 %3, %4</source>
-        <translation>%1 %2 %3, %4</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="441"/>
-        <source>%1: the drive reports no alarms</source>
-        <translation>%1: 드라이버가 알람을 알려주지 않습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="454"/>
-        <source>alarms raised</source>
-        <translation>알람 발생</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="457"/>
-        <source>%1: the drive has an alarm</source>
-        <translation>%1: 드라이버에 알람이 있습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>time to stop</source>
-        <translation>정지 시간</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="479"/>
-        <source>%1: stopped after %2 s, allowed at most %3 s</source>
-        <translation>%1: %2 s 후 정지, 허용 최대 %3 s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
-        <source>%1: nothing to read</source>
-        <translation>%1: 읽을 항목이 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
-        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
-        <translation>%1: %2 읽은 값 &quot;%3&quot;, 기대값 &quot;%4&quot;</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
-        <source>%1: %2 reads %3 %4, %5</source>
-        <translation>%1: %2 읽은 값 %3 %4, %5</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="256"/>
         <source>the stop command failed: %1</source>
         <translation>정지 명령 실패: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="269"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 후 정지</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="270"/>
         <source>not confirmed stopped: %1</source>
         <translation>정지 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
         <source>communication priority could not be given back: %1</source>
         <translation>통신 우선을 되돌릴 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="157"/>
         <source>the steps ended with the motor running</source>
         <translation>모터가 운전 중인 상태로 단계가 끝났습니다</translation>
     </message>
@@ -7698,6 +7525,90 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
 </context>
 <context>
+    <name>opentop::GoldenRecipeSource</name>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="39"/>
+        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>%1에서 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="55"/>
+        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
+        <translation>국번 %1은(는) 버스에 알려진 드라이버가 아닙니다. 먼저 버스를 스캔하십시오</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Reading the golden unit&apos;s settings…</source>
+        <translation>기준 제품의 설정을 읽는 중…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Cancel</source>
+        <translation>취소</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="73"/>
+        <source>machine number %1 is not on the bus</source>
+        <translation>국번 %1이(가) 버스에 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="86"/>
+        <source>cancelled: no recipe was made</source>
+        <translation>취소됨: 레시피를 만들지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>New recipe</source>
+        <translation>새 레시피</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <source>Product name:</source>
+        <translation>제품 이름:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>Revision:</source>
+        <translation>개정:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="111"/>
+        <source>Golden unit&apos;s backup file</source>
+        <translation>기준 제품의 백업 파일</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="112"/>
+        <source>Backups (*.json)</source>
+        <translation>백업 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="124"/>
+        <source>No drives on the bus: connect and scan first.</source>
+        <translation>버스에 드라이버가 없습니다: 먼저 연결하고 스캔하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="132"/>
+        <source>New recipe from drives</source>
+        <translation>드라이버로 새 레시피 만들기</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="133"/>
+        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
+        <translation>기준 제품 드라이버의 국번 (발견: %1):</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="143"/>
+        <source>&quot;%1&quot; is not a machine number (1–247)</source>
+        <translation>&quot;%1&quot;은(는) 국번(1–247)이 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="152"/>
+        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>버스의 드라이버로 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GroupCheck</name>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="62"/>
@@ -8423,6 +8334,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
     </message>
 </context>
 <context>
+    <name>opentop::LimitCheck</name>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="35"/>
+        <source>%1 could not be read</source>
+        <translation>%1을(를) 읽을 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="50"/>
+        <source>%1 %2 %3, %4</source>
+        <translation>%1 %2 %3, %4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="73"/>
+        <source>allowed %1–%2 %3</source>
+        <translation>허용 %1–%2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="75"/>
+        <source>allowed at most %1 %2</source>
+        <translation>허용 최대 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="77"/>
+        <source>allowed at least %1 %2</source>
+        <translation>허용 최소 %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>opentop::LineFormat</name>
     <message>
         <location filename="../transport/LineFormat.cpp" line="37"/>
@@ -8699,33 +8638,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="55"/>
+        <location filename="../ui/main/MainWindow.cpp" line="58"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="141"/>
+        <location filename="../ui/main/MainWindow.cpp" line="127"/>
         <source>connect elsewhere</source>
         <translation>다른 곳에 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="164"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>%1에 연결하는 중… (%2에 아직 연결되어 있음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="158"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>연결됨: %1 (새 연결 실패: %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
-        <location filename="../ui/main/MainWindow.cpp" line="220"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="175"/>
         <source>Cannot connect</source>
         <translation>연결할 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -8734,80 +8673,70 @@ Still connected to %2; nothing was changed.</source>
 %2에 아직 연결되어 있습니다. 아무것도 변경하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="210"/>
-        <location filename="../ui/main/MainWindow.cpp" line="342"/>
+        <location filename="../ui/main/MainWindow.cpp" line="165"/>
+        <location filename="../ui/main/MainWindow.cpp" line="242"/>
         <source>Not connected: %1</source>
         <translation>연결 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="281"/>
-        <source>Communication groups: %1 (Bus › Communication groups)</source>
-        <translation>통신 그룹: %1 (버스 › 통신 그룹)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
-        <location filename="../ui/main/MainWindow.cpp" line="314"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Connection lost: %1</source>
         <translation>연결 끊김: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="224"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 시뮬레이션 버스 (실제 하드웨어 없음) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="225"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="321"/>
+        <location filename="../ui/main/MainWindow.cpp" line="226"/>
         <source>Connecting to %1…</source>
         <translation>%1에 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="241"/>
         <source>Connected: %1</source>
         <translation>연결됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="348"/>
+        <location filename="../ui/main/MainWindow.cpp" line="248"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>연결됨: %1 (시뮬레이션, 실제 하드웨어 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="376"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. %1은(는) 설정된 기종입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="293"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>disconnect</source>
         <translation>연결 해제</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="413"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
         <source>Not connected (disconnected)</source>
         <translation>연결 안 됨(연결 해제함)</translation>
     </message>
+</context>
+<context>
+    <name>opentop::MissingValues</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
-        <location filename="../ui/main/MainWindow.cpp" line="454"/>
-        <source>quit</source>
-        <translation>종료</translation>
+        <location filename="../model/session/MissingValues.cpp" line="18"/>
+        <source>cannot check the value: reading %1 failed: %2</source>
+        <translation>값을 검사할 수 없습니다: %1 읽기 실패: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
-        <source>Unwritten changes</source>
-        <translation>쓰지 않은 변경 사항</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="441"/>
-        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
-        <translation>
-            <numerusform>드라이버에 쓰지 않은 편집이 %n개 있습니다. 버리고 종료하시겠습니까?</numerusform>
-        </translation>
+        <location filename="../model/session/MissingValues.cpp" line="41"/>
+        <source>reading %1 failed: %2</source>
+        <translation>%1 읽기 실패: %2</translation>
     </message>
 </context>
 <context>
@@ -9241,17 +9170,17 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>드라이버마다 단위가 다릅니다(%1). 하나씩 쓰십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="234"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>드라이버 %1에서 허용되지 않음(%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="241"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>드라이버 %1의 통신 그룹에서 허용되지 않습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
         <source>None of the selected drives is identified.</source>
         <translation>선택한 드라이버 중 식별된 것이 없습니다.</translation>
     </message>
@@ -9289,56 +9218,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>설정(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1을(를) 국번 %2에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="347"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="352"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
         <source>waiting…</source>
         <translation>대기 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1을(를) 드라이버 %n대에 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>드라이버 %n대 중 %1대에 쓰기 및 검증 완료.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="375"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
         <source>writing…</source>
         <translation>쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
         <source>Written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>쓰기 완료, 검증 안 됨(다시 읽을 수 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="396"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Failed: %1</source>
         <translation>실패: %1</translation>
     </message>
@@ -10428,72 +10357,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="61"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="62"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Scan or type the serial number, then Enter</source>
-        <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="91"/>
-        <source>Cancel unit (Esc)</source>
-        <translation>제품 취소 (Esc)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Time</source>
-        <translation>시각</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Serial</source>
-        <translation>시리얼</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Verdict</source>
-        <translation>판정</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Reason</source>
-        <translation>원인</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="164"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="226"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="227"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="199"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10502,169 +10401,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>open another recipe</source>
         <translation>다른 레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="231"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
-        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
-        <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
-        <source>another</source>
-        <translation>다른 유닛</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
-        <source>Per-unit value</source>
-        <translation>제품별 값</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
-        <source>Drive %1: %2 (%3–%4 %5)</source>
-        <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
-        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
-        <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="366"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="371"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="292"/>
         <source>Unit %1 — attempt %2</source>
         <translation>제품 %1 — %2회차</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
-        <source>%1, NOT RECORDED</source>
-        <translation>%1, 기록 안 됨</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="410"/>
-        <source>%1 (kept on this station)</source>
-        <translation>%1 (이 스테이션에 보관)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
-        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
-        <translation>
-            <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
-        <source>it does not answer</source>
-        <translation>데이터베이스가 응답하지 않습니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="475"/>
-        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
-        <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="190"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="312"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="401"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10674,39 +10521,87 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::ProfileCrossCheck</name>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="49"/>
+        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
+        <translation>%1: storeWith &quot;%2&quot;은(는) 명령 파라미터가 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="52"/>
+        <source>%1: the default is not among its allowed values</source>
+        <translation>%1: 기본값이 허용 값에 포함되지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="56"/>
+        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
+        <translation>%1: 비트 필드 &quot;%2&quot;: 기능 &quot;%3&quot;은(는) 읽을 수 있는 파라미터가 아닙니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="63"/>
+        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
+        <translation>%1: 알 수 없는 파라미터 &quot;%2&quot;에 대한 조건</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="65"/>
+        <source>%1: the default is not allowed when %2</source>
+        <translation>%1: %2일 때는 기본값이 허용되지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="75"/>
+        <source>%1 runs past address 0xFFFF</source>
+        <translation>%1이(가) 주소 0xFFFF를 넘어갑니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="78"/>
+        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
+        <translation>%1이(가) 0x%3에서 &quot;%2&quot;와(과) 겹칩니다(레지스터 %4개)</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="107"/>
+        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
+        <translation>identify: &quot;%1&quot;은(는) identify 읽기 범위 안의 파라미터여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="110"/>
+        <source>identify.nameMatch is not a valid regular expression</source>
+        <translation>identify.nameMatch가 올바른 정규식이 아닙니다</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="345"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>오프셋 %1에서 올바른 JSON이 아닙니다: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="349"/>
         <source>the top level must be a JSON object</source>
         <translation>최상위는 JSON 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot;가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="371"/>
         <source>must be an object</source>
         <translation>객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="373"/>
         <source>name repeated</source>
         <translation>이름이 중복됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="468"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="384"/>
         <source>texts: {setting:…} names no parameter (%1)</source>
         <translation>texts: {setting:…}이(가) 가리키는 파라미터가 없습니다(%1)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="477"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="393"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: 열 수 없습니다: %2</translation>
     </message>
@@ -11181,218 +11076,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="40"/>
         <source>Recipe editor</source>
         <translation>레시피 편집기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
         <source>Revision:</source>
         <translation>개정:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
         <source>Product:</source>
         <translation>제품:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Description:</source>
         <translation>설명:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="72"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Position:</source>
         <translation>위치:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>버스의 드라이버로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>백업 파일로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="114"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>다른 이름으로 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>버스에 있는 기준 제품의 드라이버나 그 백업 파일로 레시피를 만들거나, 레시피를 여십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>레시피가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>레시피가 검사를 통과했습니다: 저장하고 실행할 수 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>문제 %n건: 수정할 때까지 레시피를 저장할 수 없습니다.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>레시피가 검사를 통과하지 못했습니다(문제 %n건). 아무것도 저장하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1은(는) OpenTOP 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>%1 열림</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1을(를) 열었지만 그대로는 불러올 수 없습니다(%2). 저장하면 검사 후 다시 서명합니다.</translation>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
-        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>%1에서 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
-        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
-        <translation>국번 %1은(는) 버스에 알려진 드라이버가 아닙니다. 먼저 버스를 스캔하십시오</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Reading the golden unit&apos;s settings…</source>
-        <translation>기준 제품의 설정을 읽는 중…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Cancel</source>
-        <translation>취소</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="356"/>
-        <source>machine number %1 is not on the bus</source>
-        <translation>국번 %1이(가) 버스에 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="369"/>
-        <source>cancelled: no recipe was made</source>
-        <translation>취소됨: 레시피를 만들지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>레시피 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
-        <source>New recipe</source>
-        <translation>새 레시피</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <source>Product name:</source>
-        <translation>제품 이름:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
-        <source>Golden unit&apos;s backup file</source>
-        <translation>기준 제품의 백업 파일</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="405"/>
-        <source>Backups (*.json)</source>
-        <translation>백업 (*.json)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
-        <source>No drives on the bus: connect and scan first.</source>
-        <translation>버스에 드라이버가 없습니다: 먼저 연결하고 스캔하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
-        <source>New recipe from drives</source>
-        <translation>드라이버로 새 레시피 만들기</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="426"/>
-        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
-        <translation>기준 제품 드라이버의 국번 (발견: %1):</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="436"/>
-        <source>&quot;%1&quot; is not a machine number (1–247)</source>
-        <translation>&quot;%1&quot;은(는) 국번(1–247)이 아닙니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="445"/>
-        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>버스의 드라이버로 새 레시피를 만들었습니다: 설정과 검사 단계의 한계값을 확인한 뒤 저장하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="456"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Save recipe</source>
         <translation>레시피 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
         <source>Saved and signed: %1</source>
         <translation>저장 및 서명 완료: %1</translation>
     </message>
@@ -12350,6 +12168,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RelayAutotune</name>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="65"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>운전 속도는 0보다 크고 시험 속도 한계값 %1 %2보다 작아야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="72"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>릴레이 진폭은 최대 출력의 0–50 %여야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="75"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>개루프: %1 %2에 필요한 출력을 찾는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="148"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>출력 %1 %에서 모터가 돌지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="180"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>운전 속도에 출력 %1 %가 필요합니다: 그 위아래로 ±%2 %의 여유가 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="185"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>%1 %2 부근에서 릴레이 시험 중 (출력 %3 % ± %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="224"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 이내에 안정된 진동이 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="226"/>
+        <source>try a larger amplitude</source>
+        <translation>진폭을 크게 해 보십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="259"/>
+        <source>the relay result was refused: %1</source>
+        <translation>릴레이 시험 결과를 쓸 수 없습니다: %1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayTuning</name>
     <message>
         <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
@@ -13142,251 +13008,254 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>출하 검사 결과</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>시간 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>첫 불합격 항목</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>CSV 내보내기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>성적서 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
-        <source>SQLite file or postgresql://user@host/database</source>
-        <translation>SQLite 파일 또는 postgresql://user@host/database</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
-        <source>Open</source>
-        <translation>열기</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
-        <source>File…</source>
-        <translation>파일…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
-        <source>any; * and ? as wildcards (SN-10*)</source>
-        <translation>전체. * 와 ? 를 와일드카드로 사용(SN-10*)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
-        <source>any</source>
-        <translation>모두</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
-        <source>Today</source>
-        <translation>오늘</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
-        <source>Last 24 hours</source>
-        <translation>최근 24시간</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
-        <source>Last 7 days</source>
-        <translation>최근 7일</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
-        <source>Last 30 days</source>
-        <translation>최근 30일</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
-        <source>All</source>
-        <translation>전체</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
-        <source>Any</source>
-        <translation>모두</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
-        <source>Search</source>
-        <translation>검색</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
-        <source>Serial:</source>
-        <translation>시리얼:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
-        <source>Recipe:</source>
-        <translation>레시피:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
-        <source>Station:</source>
-        <translation>스테이션:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
-        <source>Period:</source>
-        <translation>기간:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
-        <source>Verdict:</source>
-        <translation>판정:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
-        <source>Database:</source>
-        <translation>데이터베이스:</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1에 아직 결과 데이터베이스가 없습니다: 스테이션이 첫 제품을 기록할 때 만들어집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Opening the results database %1…</source>
         <translation>결과 데이터베이스 %1을(를) 여는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Results database %1</source>
         <translation>결과 데이터베이스 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
         <source>Searching…</source>
         <translation>검색하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="344"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="292"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>제품 %n대: 합격 %1, 불합격 %2, 스테이션 오류 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="372"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
         <source>no unit is selected</source>
         <translation>선택한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="324"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
         <source>Reading unit %1…</source>
         <translation>제품 %1을(를) 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>제품 기록을 아직 읽는 중입니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="382"/>
-        <source>Open results database</source>
-        <translation>결과 데이터베이스 열기</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
-        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
-        <translation>SQLite 데이터베이스 (*.db *.sqlite);;모든 파일 (*)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>Export units as CSV</source>
         <translation>제품을 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>제품 %n대를 %1에 저장했습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="409"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
         <source>Save certificate</source>
         <translation>성적서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 파일 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
         <source>Certificate written to %1</source>
         <translation>성적서를 %1에 저장했습니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultsFilterBar</name>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="21"/>
+        <source>SQLite file or postgresql://user@host/database</source>
+        <translation>SQLite 파일 또는 postgresql://user@host/database</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="22"/>
+        <source>Open</source>
+        <translation>열기</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="23"/>
+        <source>File…</source>
+        <translation>파일…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="30"/>
+        <source>any; * and ? as wildcards (SN-10*)</source>
+        <translation>전체. * 와 ? 를 와일드카드로 사용(SN-10*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="32"/>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="34"/>
+        <source>any</source>
+        <translation>모두</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="36"/>
+        <source>Today</source>
+        <translation>오늘</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="37"/>
+        <source>Last 24 hours</source>
+        <translation>최근 24시간</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="38"/>
+        <source>Last 7 days</source>
+        <translation>최근 7일</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="39"/>
+        <source>Last 30 days</source>
+        <translation>최근 30일</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="40"/>
+        <source>All</source>
+        <translation>전체</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="43"/>
+        <source>Any</source>
+        <translation>모두</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="47"/>
+        <source>Search</source>
+        <translation>검색</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="51"/>
+        <source>Serial:</source>
+        <translation>시리얼:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="52"/>
+        <source>Recipe:</source>
+        <translation>레시피:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="53"/>
+        <source>Station:</source>
+        <translation>스테이션:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="54"/>
+        <source>Period:</source>
+        <translation>기간:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="55"/>
+        <source>Verdict:</source>
+        <translation>판정:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="63"/>
+        <source>Database:</source>
+        <translation>데이터베이스:</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="105"/>
+        <source>Open results database</source>
+        <translation>결과 데이터베이스 열기</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="106"/>
+        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
+        <translation>SQLite 데이터베이스 (*.db *.sqlite);;모든 파일 (*)</translation>
     </message>
 </context>
 <context>
@@ -14044,6 +13913,39 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialEntry</name>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="37"/>
+        <source>Scan or type the serial number, then Enter</source>
+        <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="38"/>
+        <source>Cancel unit (Esc)</source>
+        <translation>제품 취소 (Esc)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="95"/>
+        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
+        <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="97"/>
+        <source>another</source>
+        <translation>다른 유닛</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="111"/>
+        <source>Per-unit value</source>
+        <translation>제품별 값</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="112"/>
+        <source>Drive %1: %2 (%3–%4 %5)</source>
+        <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SerialLineFields</name>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
@@ -14137,152 +14039,110 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="88"/>
+        <location filename="../cli/SetCommand.cpp" line="42"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>파라미터를 이름으로 쓰고, 검사하고, 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="98"/>
+        <location filename="../cli/SetCommand.cpp" line="52"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>주소로 레지스터를 씁니다: ADDR=VALUE (반복 가능; --fc 16이면 VALUE,VALUE...).</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 쓰기의 기능 코드: 6(기본값) 또는 16.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="63"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>오류: 사용법: set ID NAME=VALUE... (예: set 1 spno2.accel=2.5) 또는 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="121"/>
+        <location filename="../cli/SetCommand.cpp" line="75"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>오류: &quot;%1&quot;은(는) NAME=VALUE 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="128"/>
-        <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
-        <translation>오류: %1이(가) 두 번 지정되었습니다(%2=%3 및 %4). 설정은 한 번씩만 지정하십시오. 아무것도 쓰지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="77"/>
-        <location filename="../cli/SetCommand.cpp" line="139"/>
-        <location filename="../cli/SetCommand.cpp" line="279"/>
+        <location filename="../cli/SetCommand.cpp" line="82"/>
+        <location filename="../cli/SetCommand.cpp" line="91"/>
+        <location filename="../cli/SetCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="149"/>
-        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
-        <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="152"/>
-        <source>%1 is read-only</source>
-        <translation>%1은(는) 읽기 전용입니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="154"/>
-        <source>%1 is a %2 command; add --yes to send it</source>
-        <translation>%1은(는) %2 명령입니다. 보내려면 --yes를 추가하십시오</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="209"/>
-        <source>error: cannot read %1 to check the values; nothing written</source>
-        <translation>오류: 값을 검사하기 위해 %1을(를) 읽을 수 없습니다. 아무것도 쓰지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
-        <location filename="../cli/SetCommand.cpp" line="262"/>
-        <location filename="../cli/SetCommand.cpp" line="273"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="114"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="95"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>모터를 움직이거나 리셋, 삭제, 초기화, 저장하는 명령과 시리얼 설정 잠금의 설정을 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="250"/>
-        <source>Add --yes to set it.</source>
-        <translation>설정하려면 --yes를 추가하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="79"/>
-        <location filename="../cli/SetCommand.cpp" line="280"/>
-        <source>nothing was written</source>
-        <translation>아무것도 쓰지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="308"/>
-        <source>not written (interrupted)</source>
-        <translation>쓰지 않음(중단됨)</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="321"/>
+        <location filename="../cli/SetCommand.cpp" line="146"/>
         <source>next: %1</source>
         <translation>다음: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="323"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>다음: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (공장 출하 통신 설정)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="373"/>
+        <location filename="../cli/SetCommand.cpp" line="199"/>
         <source>written, verified</source>
         <translation>쓰기 완료, 검증됨</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="375"/>
+        <location filename="../cli/SetCommand.cpp" line="201"/>
         <source>written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="376"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written (command, not readable)</source>
         <translation>쓰기 완료(명령, 읽기 불가)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="378"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. &quot;get&quot;으로 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="215"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetCommand.cpp" line="222"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>참고: 드라이버는 다음 전원 투입부터 %1을(를) 사용합니다: 드라이버 전원을 껐다 켠 뒤 새 설정(--baud, --parity)으로 연결하십시오</translation>
     </message>
@@ -14359,6 +14219,49 @@ This moves or stops a motor: add --yes to send it.</source>
         <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>%1에도 씀(통신 그룹). 다시 읽지 않음: 프로파일의 파라미터가 아님</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SettingsWrite</name>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="29"/>
+        <source>%1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
+        <translation>%1이(가) 두 번 지정되었습니다(%2=%3 및 %4). 설정은 한 번씩만 지정하십시오. 아무것도 쓰지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="76"/>
+        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
+        <translation>%1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="80"/>
+        <source>%1 is read-only</source>
+        <translation>%1은(는) 읽기 전용입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="83"/>
+        <source>%1 is a %2 command; add --yes to send it</source>
+        <translation>%1은(는) %2 명령입니다. 보내려면 --yes를 추가하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="105"/>
+        <source>cannot read %1 to check the values; nothing written</source>
+        <translation>값을 검사하기 위해 %1을(를) 읽을 수 없습니다. 아무것도 쓰지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="157"/>
+        <source>Add --yes to set it.</source>
+        <translation>설정하려면 --yes를 추가하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="229"/>
+        <source>interrupted as it was sent</source>
+        <translation>전송 중 중단됨</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="231"/>
+        <source>not written (interrupted)</source>
+        <translation>쓰지 않음(중단됨)</translation>
     </message>
 </context>
 <context>
@@ -15480,11 +15383,74 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StationNotice</name>
+    <message numerus="yes">
+        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <source>it does not answer</source>
+        <translation>데이터베이스가 응답하지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
+        <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationRecipe</name>
     <message>
         <location filename="../model/station/StationRecipe.cpp" line="68"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>이 레시피는 제품별 값을 CSV 파일에서 가져옵니다: 먼저 그 파일을 여십시오</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationResults</name>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="63"/>
+        <source>opening the results database</source>
+        <translation>결과 데이터베이스를 여는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="65"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>연결할 수 없음(%1). 자동으로 다시 시도하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="66"/>
+        <source>no results database</source>
+        <translation>결과 데이터베이스 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="72"/>
+        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
+        <translation>제품 %1의 결과(%2)가 아직 결과 데이터베이스에 기록되지 않았습니다. 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(%3)</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="77"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>결과 데이터베이스를 여는 중입니다. 잠시 후 다시 시도하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="79"/>
+        <source>the results database is not open; nothing is tested unless it is recorded</source>
+        <translation>결과 데이터베이스가 열려 있지 않습니다. 기록할 수 없으면 검사하지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="80"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>결과 데이터베이스에 연결할 수 없습니다(%1). 기록할 수 없으면 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
 </context>
 <context>
@@ -15582,6 +15548,109 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StepMeasure</name>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="85"/>
+        <source>%1: the drive stopped answering: %2</source>
+        <translation>%1: 드라이버가 응답하지 않습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="93"/>
+        <source>%1: the drive raised an alarm while running</source>
+        <translation>%1: 운전 중 드라이버에서 알람이 발생했습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="113"/>
+        <source>%1: %2 %3</source>
+        <translation>%1: %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="132"/>
+        <source>%1: the drive has no speed to wait for</source>
+        <translation>%1: 드라이버에 기다릴 속도가 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="155"/>
+        <source>time to reach speed</source>
+        <translation>속도 도달 시간</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="159"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="167"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="168"/>
+        <source>unknown</source>
+        <translation>알 수 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="169"/>
+        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
+        <translation>%1: %5 s 이내에 %2 %3 ±%4 %3에 도달하지 못했습니다(마지막 읽은 값 %6 %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="170"/>
+        <source>its target</source>
+        <translation>목표 속도</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="205"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="220"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="240"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="301"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="215"/>
+        <source>%1: the drive reports no alarms</source>
+        <translation>%1: 드라이버가 알람을 알려주지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="225"/>
+        <source>alarms raised</source>
+        <translation>알람 발생</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="227"/>
+        <source>%1: the drive has an alarm</source>
+        <translation>%1: 드라이버에 알람이 있습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="234"/>
+        <source>%1: nothing to read</source>
+        <translation>%1: 읽을 항목이 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="248"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="251"/>
+        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
+        <translation>%1: %2 읽은 값 &quot;%3&quot;, 기대값 &quot;%4&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="259"/>
+        <source>%1: %2 reads %3 %4, %5</source>
+        <translation>%1: %2 읽은 값 %3 %4, %5</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>time to stop</source>
+        <translation>정지 시간</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="303"/>
+        <source>%1: stopped after %2 s, allowed at most %3 s</source>
+        <translation>%1: %2 s 후 정지, 허용 최대 %3 s</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StepMetrics</name>
     <message>
         <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
@@ -15592,6 +15661,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
         <source>too few samples after the step (%1)</source>
         <translation>스텝 이후 샘플이 너무 적습니다(%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTest</name>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="39"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>스텝 시험은 한 속도에서 다른 속도로 정회전합니다: 시작 속도와 목표 속도는 서로 달라야 하며 0 이상이어야 합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="47"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2이(가) 시험 속도 한계값 %3 %2을(를) 넘습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="55"/>
+        <source>Running to %1 %2</source>
+        <translation>%1 %2까지 운전하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="88"/>
+        <source>Step to %1 %2</source>
+        <translation>%1 %2(으)로 스텝</translation>
     </message>
 </context>
 <context>
@@ -16301,85 +16393,85 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>오브젝트 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="26"/>
         <source>Cannot open %1: %2</source>
         <translation>%1을(를) 열 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1이(가) 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <source>send failed</source>
         <translation>송신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>다른 응답이 이어졌습니다: 이 응답은 이전 요청에 대한 것일 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>드라이브 자체 통신 형식에는 시리얼 포트가 필요합니다. Modbus TCP 게이트웨이는 라인을 스스로 설정합니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>라인을 %1(으)로 전환할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>슬레이브 %1의 응답, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
         <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 불일치</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
         <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
         <source> (connection closed)</source>
         <translation> (연결 끊김)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <source>stale bytes discarded before sending</source>
         <translation>송신 전 남아 있던 바이트 버림</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
         <source>late bytes discarded after an error</source>
         <translation>오류 후 늦게 온 바이트 버림</translation>
     </message>
@@ -17437,6 +17529,87 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuningDrive</name>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="50"/>
+        <source>a tuning test is already running</source>
+        <translation>튜닝 시험이 이미 실행 중입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="88"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>드라이버 설정을 읽는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="98"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>드라이버 설정을 읽을 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="139"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>드라이버가 폐루프 속도 모드가 아닙니다: 먼저 %1(%2)을(를) %3(으)로 설정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="141"/>
+        <source> or </source>
+        <translation> 또는 </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="146"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>통신 두절 정지 시간을 %1 s로 설정하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="201"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>드라이버가 응답하지 않습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="221"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>속도 %1 %2이(가) 시험 한계값 %3 %2을(를) 넘었습니다: 즉시 정지함</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="228"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>전류 %1 A가 시험 한계값 %2 A를 넘었습니다: 즉시 정지함</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="234"/>
+        <source>cancelled</source>
+        <translation>취소됨</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="271"/>
+        <source>Stopping the motor</source>
+        <translation>모터를 정지하는 중</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="303"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>모터 정지됨(확인됨)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="304"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>모터 정지를 확인할 수 없습니다: 모터를 점검하십시오</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningDriveSettings</name>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="53"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>속도 모드를 읽을 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="56"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>드라이버가 폐루프 속도 모드가 아닙니다(현재: %1). 먼저 설정 페이지에서 폐루프 모드를 선택하십시오.</translation>
+    </message>
+</context>
+<context>
     <name>opentop::TuningGains</name>
     <message>
         <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
@@ -17600,125 +17773,105 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
-        <source>STOP</source>
-        <translation>정지</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
-        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
-        <translation>진행 중인 시험을 취소합니다: 모터를 정지하고 정지를 확인합니다</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="53"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
         <source>Step test</source>
         <translation>스텝 시험</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="54"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Relay autotune</source>
         <translation>릴레이 오토튜닝</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="112"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>준비 완료. 시험을 확인하기 전에는 아무것도 움직이지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
-        <source>Could not read the speed mode: %1</source>
-        <translation>속도 모드를 읽을 수 없습니다: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
-        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
-        <translation>드라이버가 폐루프 속도 모드가 아닙니다(현재: %1). 먼저 설정 페이지에서 폐루프 모드를 선택하십시오.</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="191"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>한계값: %1 %2, %3.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>no current limit</source>
         <translation>전류 한계값 없음</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="208"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1의 모터가 현재 속도 모드로 %2에서 %3 %4까지 약 %5 s 동안 운전한 뒤 정지합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Run</source>
         <translation>실행</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="229"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1의 모터가 개루프(속도 루프 끔)로 %2 %3 부근에서 운전하며 출력을 ±%4 %씩 전환합니다. 최대 %5 s 후 정지합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="252"/>
         <source>Stop command sent.</source>
         <translation>정지 명령을 보냈습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="253"/>
         <source>Stop command failed: %1</source>
         <translation>정지 명령 실패: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="263"/>
         <source>Stopping…</source>
         <translation>정지하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="277"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>실행 %1: %2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="296"/>
         <source>Step test done.</source>
         <translation>스텝 시험 완료.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="297"/>
         <source>Step test ended: %1</source>
         <translation>스텝 시험 종료: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="302"/>
         <source>The test was stopped</source>
         <translation>시험이 정지됨</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="333"/>
         <source>Autotune ended: %1</source>
         <translation>오토튜닝 종료: %1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="335"/>
         <source>The autotune was stopped</source>
         <translation>오토튜닝이 정지됨</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="344"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>예측: %1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>오토튜닝 완료: 제안값 %1. 수락하면 드라이버에 씁니다.</translation>
     </message>
@@ -17783,194 +17936,61 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
-    <name>opentop::TuningRunner</name>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
-        <source>a tuning test is already running</source>
-        <translation>튜닝 시험이 이미 실행 중입니다</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
-        <source>Reading the drive&apos;s settings</source>
-        <translation>드라이버 설정을 읽는 중</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
-        <source>could not read the drive&apos;s settings: %1</source>
-        <translation>드라이버 설정을 읽을 수 없습니다: %1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
-        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
-        <translation>드라이버가 폐루프 속도 모드가 아닙니다: 먼저 %1(%2)을(를) %3(으)로 설정하십시오</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
-        <source> or </source>
-        <translation> 또는 </translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
-        <source>Setting the communication-loss braking time to %1 s</source>
-        <translation>통신 두절 정지 시간을 %1 s로 설정하는 중</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
-        <source>the drive stopped answering: %1</source>
-        <translation>드라이버가 응답하지 않습니다: %1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
-        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
-        <translation>속도 %1 %2이(가) 시험 한계값 %3 %2을(를) 넘었습니다: 즉시 정지함</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
-        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
-        <translation>전류 %1 A가 시험 한계값 %2 A를 넘었습니다: 즉시 정지함</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
-        <source>cancelled</source>
-        <translation>취소됨</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
-        <source>Stopping the motor</source>
-        <translation>모터를 정지하는 중</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
-        <source>motor stopped (confirmed)</source>
-        <translation>모터 정지됨(확인됨)</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
-        <source>the motor could not be confirmed stopped: check it</source>
-        <translation>모터 정지를 확인할 수 없습니다: 모터를 점검하십시오</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
-        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
-        <translation>스텝 시험은 한 속도에서 다른 속도로 정회전합니다: 시작 속도와 목표 속도는 서로 달라야 하며 0 이상이어야 합니다</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
-        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
-        <translation>%1 %2이(가) 시험 속도 한계값 %3 %2을(를) 넘습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
-        <source>Running to %1 %2</source>
-        <translation>%1 %2까지 운전하는 중</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
-        <source>Step to %1 %2</source>
-        <translation>%1 %2(으)로 스텝</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
-        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
-        <translation>운전 속도는 0보다 크고 시험 속도 한계값 %1 %2보다 작아야 합니다</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
-        <source>the relay amplitude must be 0–50 % of full output</source>
-        <translation>릴레이 진폭은 최대 출력의 0–50 %여야 합니다</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
-        <source>Open loop: finding the output for %1 %2</source>
-        <translation>개루프: %1 %2에 필요한 출력을 찾는 중</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
-        <source>the motor did not turn at %1 % output</source>
-        <translation>출력 %1 %에서 모터가 돌지 않았습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
-        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
-        <translation>운전 속도에 출력 %1 %가 필요합니다: 그 위아래로 ±%2 %의 여유가 없습니다</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
-        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
-        <translation>%1 %2 부근에서 릴레이 시험 중 (출력 %3 % ± %4 %)</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
-        <source>no steady oscillation within %1 s: %2</source>
-        <translation>%1 s 이내에 안정된 진동이 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
-        <source>try a larger amplitude</source>
-        <translation>진폭을 크게 해 보십시오</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
-        <source>the relay result was refused: %1</source>
-        <translation>릴레이 시험 결과를 쓸 수 없습니다: %1</translation>
-    </message>
-</context>
-<context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save CSV…</source>
         <translation>CSV 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="39"/>
         <source>Save PNG…</source>
         <translation>PNG 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>선택한 실행 기록을 저장합니다: 샘플, 게인, 지표</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>Saves the chart as it is shown</source>
         <translation>표시된 그대로 차트를 저장합니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="46"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>실선: 속도 · 점선: 명령 · 일점쇄선: 전류(오른쪽 축) · 파선: 예측 속도</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="220"/>
         <source>no run to save</source>
         <translation>저장할 실행 기록이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="233"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="237"/>
         <source>Save run as CSV</source>
         <translation>실행 기록을 CSV로 저장</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="234"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="242"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Save chart as PNG</source>
         <translation>차트를 PNG로 저장</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="243"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 이미지 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Could not write %1.</source>
         <translation>%1에 쓸 수 없습니다.</translation>
     </message>
@@ -17991,6 +18011,19 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1: 프로파일의 튜닝 섹션에는 periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode, 그리고 피드백 파라미터가 알려진 closedLoopModes가 필요합니다</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningStatusRow</name>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="12"/>
+        <source>STOP</source>
+        <translation>정지</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="17"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>진행 중인 시험을 취소합니다: 모터를 정지하고 정지를 확인합니다</translation>
     </message>
 </context>
 <context>
@@ -18032,6 +18065,39 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::UnitLog</name>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Time</source>
+        <translation>시각</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Serial</source>
+        <translation>시리얼</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Verdict</source>
+        <translation>판정</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Reason</source>
+        <translation>원인</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <source>%1, NOT RECORDED</source>
+        <translation>%1, 기록 안 됨</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1 (이 스테이션에 보관)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
@@ -18062,6 +18128,24 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>JSON이 아닙니다: %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UnitStartGate</name>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="45"/>
+        <source>cancelled before it started</source>
+        <translation>시작 전에 취소됨</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="80"/>
+        <source>not connected to a bus</source>
+        <translation>버스에 연결되어 있지 않음</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="85"/>
+        <source>a drive of the station is not safe: %1</source>
+        <translation>스테이션의 드라이브가 안전하지 않습니다: %1</translation>
     </message>
 </context>
 <context>
@@ -18201,104 +18285,106 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
-        <source>depends on %1, which is not known yet</source>
-        <translation>아직 알 수 없는 %1에 따라 달라집니다</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
-        <source>text of up to %1 characters</source>
-        <translation>최대 %1자의 텍스트</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
-        <source> or </source>
-        <translation> 또는 </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="63"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1: %2은(는) 권장 범위 %3을(를) 벗어납니다. 허용되는 값이므로 씁니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
-        <source>, or </source>
-        <translation>, 또는 </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
-        <source>any value</source>
-        <translation>모든 값</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="80"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (기종을 알 수 없으므로 값이 %1에 맞아야 합니다. 해당 기종의 범위를 쓰려면 기종을 지정하십시오)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="90"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1: 허용 값이 아직 읽지 않은 %2에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="95"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1: 값이 레지스터 범위를 벗어났습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="107"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1: %2은(는) 허용되지 않습니다. 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="119"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1: 레지스터 %2개가 필요하지만 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="149"/>
         <source>%1 is text, not a number</source>
         <translation>%1은(는) 숫자가 아니라 텍스트입니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="162"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1: %2이(가) 단위 %3 %4보다 세밀합니다. 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="195"/>
         <source>%1: at most %2 characters</source>
         <translation>%1: 최대 %2자</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="200"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1: 출력 가능한 ASCII 문자만 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="210"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1: 값이 없습니다. 허용: %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="250"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1: &quot;%2&quot;은(는) %3이(가) %4일 때만 사용할 수 있습니다. 현재 허용: %5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="263"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="283"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1: &quot;%2&quot;은(는) 올바른 값이 아닙니다. 허용: %3</translation>
     </message>
+</context>
+<context>
+    <name>opentop::ValueFormat</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="45"/>
+        <source> or </source>
+        <translation> 또는 </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="65"/>
+        <source>depends on %1, which is not known yet</source>
+        <translation>아직 알 수 없는 %1에 따라 달라집니다</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="67"/>
+        <source>text of up to %1 characters</source>
+        <translation>최대 %1자의 텍스트</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="73"/>
+        <source>, or </source>
+        <translation>, 또는 </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="74"/>
+        <source>any value</source>
+        <translation>모든 값</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="81"/>
         <source>(invalid)</source>
         <translation>(무효)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="92"/>
         <source>unknown code %1</source>
         <translation>알 수 없는 코드 %1</translation>
     </message>

@@ -260,187 +260,142 @@
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="38"/>
         <source>top level</source>
         <translation>顶层</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="55"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="41"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必须为 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="66"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必须是小写 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="60"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必须为 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="78"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必须为 1200–115200，stopBits 必须为 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats：“%1”不是 8N1 或 8E1 这样的格式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="80"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats 必须包含默认格式 %1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="98"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="84"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs 必须为 0–60000</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 1–125，maxWriteRegisters 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="113"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="99"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必须在 1–247 范围内</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="116"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="141"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="127"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 和 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="152"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="138"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能码 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1 has no name</source>
         <translation>%1 没有名称</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="198"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="184"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必须是 %2 之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="187"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代码 %2 重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
-        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
-        <translation>%1：storeWith &quot;%2&quot; 不是命令参数</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
-        <source>%1: the default is not among its allowed values</source>
-        <translation>%1：默认值不在允许值范围内</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
-        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
-        <translation>%1：位域 &quot;%2&quot;：功能 &quot;%3&quot; 不是可读参数</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
-        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
-        <translation>%1：条件引用了未知参数 &quot;%2&quot;</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
-        <source>%1: the default is not allowed when %2</source>
-        <translation>%1：当 %2 时不允许使用默认值</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
-        <source>%1 runs past address 0xFFFF</source>
-        <translation>%1 超出地址 0xFFFF</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
-        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
-        <translation>%1 与 &quot;%2&quot; 在 0x%3 处重叠（%4 个寄存器）</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
-        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
-        <translation>identify：&quot;%1&quot; 必须是 identify 读取范围内的参数</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
-        <source>identify.nameMatch is not a valid regular expression</source>
-        <translation>identify.nameMatch 不是有效的正则表达式</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="203"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必须是参数名、参数名列表或对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="240"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 没有位域 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是可用于写入 &quot;%3&quot; 的值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="264"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="280"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 需要 &quot;selected&quot; 和 &quot;maxSeconds&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="283"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重复出现</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="288"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1：&quot;maxSeconds&quot; 必须大于 0 且不超过 600</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="320"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1：&quot;light&quot; 必须是 %2 之一，且每个只能出现一次</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="323"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1：&quot;colour&quot; 必须为 #rrggbb</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="325"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1：&quot;label&quot; 和 &quot;meaning&quot; 不能为空</translation>
     </message>
@@ -453,6 +408,16 @@
         <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>未达到</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <source>error: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <source>nothing was written</source>
+        <translation>未写入任何内容</translation>
     </message>
 </context>
 <context>
@@ -874,6 +839,134 @@
     </message>
 </context>
 <context>
+    <name>opentop::AlarmRecordsView</name>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Code</source>
+        <translation>代码</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Panel</source>
+        <translation>面板</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Cleared by</source>
+        <translation>清除方式</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="67"/>
+        <source>Cause and remedy</source>
+        <translation>原因和处理方法</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="68"/>
+        <source>Communication error register</source>
+        <translation>通信错误寄存器</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="75"/>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="115"/>
+        <source>Select a record to see its cause and remedy.</source>
+        <translation>选择一条记录查看其原因和处理方法。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="76"/>
+        <source>Not read yet.</source>
+        <translation>尚未读取。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="126"/>
+        <source>This drive has no communication error register.</source>
+        <translation>该驱动器没有通信错误寄存器。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="128"/>
+        <source>%1: could not be read.</source>
+        <translation>%1：无法读取。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="130"/>
+        <source>%1: no error (0).</source>
+        <translation>%1：无错误（0）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="133"/>
+        <source>%1: %2, not a known code.</source>
+        <translation>%1：%2，不是已知代码。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="135"/>
+        <source>%1: %2 %3
+Cause: %4
+Remedy: %5</source>
+        <translation>%1：%2 %3
+原因：%4
+处理方法：%5</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No alarm records</source>
+        <translation>无报警记录</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No warning records</source>
+        <translation>无警告记录</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="153"/>
+        <source>%1: could not be read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="156"/>
+        <source>%1: %2 of %3 records, newest first</source>
+        <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="167"/>
+        <source>unknown code</source>
+        <translation>未知代码</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="196"/>
+        <source>Record %1: code %2 is not in the %3 table.</source>
+        <translation>记录 %1：代码 %2 不在 %3 表中。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="201"/>
+        <source>%1 %2 (record %3)</source>
+        <translation>%1 %2（记录 %3）</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="203"/>
+        <source>Cause: %1</source>
+        <translation>原因：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="205"/>
+        <source>Remedy: %1</source>
+        <translation>处理方法：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="207"/>
+        <source>To clear: %1</source>
+        <translation>清除方法：%1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AlarmsCommand</name>
     <message>
         <location filename="../cli/AlarmsCommand.cpp" line="164"/>
@@ -969,298 +1062,173 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="35"/>
         <source>&amp;Re-read</source>
         <translation>重新读取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="36"/>
         <source>Reset &amp;alarm…</source>
         <translation>报警复位(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="62"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="37"/>
         <source>&amp;Clear records…</source>
         <translation>清除记录(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="41"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>站号 %1（%2）的报警和警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>#</source>
-        <translation>#</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Code</source>
-        <translation>代码</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Panel</source>
-        <translation>面板</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Name</source>
-        <translation>名称</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Cleared by</source>
-        <translation>清除方式</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="111"/>
-        <source>Cause and remedy</source>
-        <translation>原因和处理方法</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="112"/>
-        <source>Communication error register</source>
-        <translation>通信错误寄存器</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>发送报警复位命令；显示报警是否已清除或只能重新上电清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驱动器保存的报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="132"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="303"/>
-        <source>Select a record to see its cause and remedy.</source>
-        <translation>选择一条记录查看其原因和处理方法。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
-        <source>Not read yet.</source>
-        <translation>尚未读取。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="135"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>该驱动器不保存报警或警告记录。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="165"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
         <source>Alarm state: %1</source>
         <translation>报警状态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
         <source>Reading the records…</source>
         <translation>正在读取记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="277"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="280"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="284"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
         <source>Could not be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
-        <source>This drive has no communication error register.</source>
-        <translation>该驱动器没有通信错误寄存器。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
-        <source>%1: could not be read.</source>
-        <translation>%1：无法读取。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
-        <source>%1: no error (0).</source>
-        <translation>%1：无错误（0）。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
-        <source>%1: %2, not a known code.</source>
-        <translation>%1：%2，不是已知代码。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="319"/>
-        <source>%1: %2 %3
-Cause: %4
-Remedy: %5</source>
-        <translation>%1：%2 %3
-原因：%4
-处理方法：%5</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No alarm records</source>
-        <translation>无报警记录</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No warning records</source>
-        <translation>无警告记录</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="337"/>
-        <source>%1: could not be read: %2</source>
-        <translation>%1：无法读取：%2</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="340"/>
-        <source>%1: %2 of %3 records, newest first</source>
-        <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="351"/>
-        <source>unknown code</source>
-        <translation>未知代码</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
-        <source>Record %1: code %2 is not in the %3 table.</source>
-        <translation>记录 %1：代码 %2 不在 %3 表中。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
-        <source>%1 %2 (record %3)</source>
-        <translation>%1 %2（记录 %3）</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
-        <source>Cause: %1</source>
-        <translation>原因：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
-        <source>Remedy: %1</source>
-        <translation>处理方法：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="391"/>
-        <source>To clear: %1</source>
-        <translation>清除方法：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="420"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
         <source>Writes: %1</source>
         <translation>写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，将清除当前报警。部分报警只能通过重新上电清除；结果会给出提示。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="428"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
         <source>Reset alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="427"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>向站号 %1 发送报警复位命令？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="435"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Sending the alarm reset…</source>
         <translation>正在发送报警复位…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="441"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="444"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>请关闭驱动器电源，等待 5 s 后再接通。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 条记录）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>the alarm and warning records</source>
         <translation>报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>Clear records</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source>Erase %1 of machine %2?</source>
         <translation>清除站号 %2 的%1？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source> and </source>
         <translation> 和 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="461"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>记录清除后无法恢复。写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="463"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>Erasing the records…</source>
         <translation>正在清除记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="482"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="484"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -2028,6 +1996,27 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusLeaving</name>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="68"/>
+        <location filename="../ui/main/BusLeaving.cpp" line="88"/>
+        <source>quit</source>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="77"/>
+        <source>Unwritten changes</source>
+        <translation>未写入的修改</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/main/BusLeaving.cpp" line="78"/>
+        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
+        <translation>
+            <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusListMenu</name>
     <message>
         <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
@@ -2482,22 +2471,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="223"/>
+        <location filename="../model/bus/BusScanner.cpp" line="152"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their address switches (%3)</source>
         <translation>两次收到损坏的应答（%1）：可能有两台驱动器共用站号 %2；请检查其地址开关（%3）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="229"/>
+        <location filename="../model/bus/BusScanner.cpp" line="158"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有应答，但没有匹配的设备描述（%1）</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="247"/>
+        <location filename="../model/bus/BusScanner.cpp" line="171"/>
         <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
         <translation>有应答，但识别读取没有回复（%1），再询问 %2 次仍然如此：请手动添加，或用更长的等待时间重新扫描</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="333"/>
+        <location filename="../model/bus/BusScanner.cpp" line="243"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>首次应答较迟（超过 %1 ms 等待时间）；加长等待时间可使该总线的扫描更可靠</translation>
     </message>
@@ -3961,6 +3950,14 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::ConnectionViews</name>
+    <message>
+        <location filename="../ui/main/ConnectionViews.cpp" line="80"/>
+        <source>Communication groups: %1 (Bus › Communication groups)</source>
+        <translation>通信组：%1（总线 › 通信组）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DbuSimDevice</name>
     <message>
         <location filename="../sim/DbuSimDevice.cpp" line="340"/>
@@ -4518,41 +4515,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="91"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="93"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="95"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="96"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 是命令，不是设定；命令仅在请求时逐条发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="249"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="260"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="272"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="252"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="263"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="275"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="283"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n 个写入失败：%1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>已写入，但未能在所有收到的驱动器上确认：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="292"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n 个值已写入并校验</numerusform>
@@ -4562,40 +4559,30 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="82"/>
+        <location filename="../model/session/DeviceSession.cpp" line="83"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 没有参数 &quot;%2&quot;</translation>
     </message>
     <message>
         <location filename="../model/session/BlockReader.cpp" line="50"/>
-        <location filename="../model/session/DeviceSession.cpp" line="91"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>无法读取 %1（它是只写命令）</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
-        <source>cannot check the value: reading %1 failed: %2</source>
-        <translation>无法检查该值：读取 %1 失败：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="156"/>
+        <location filename="../model/session/DeviceSession.cpp" line="137"/>
         <source>%1 is read-only</source>
         <translation>%1 为只读</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="162"/>
+        <location filename="../model/session/DeviceSession.cpp" line="143"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是%2命令；仅在明确请求时才发送</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="192"/>
+        <location filename="../model/session/DeviceSession.cpp" line="173"/>
         <source>%1 cannot be checked: %2</source>
         <translation>无法检查 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="227"/>
-        <source>reading %1 failed: %2</source>
-        <translation>读取 %1 失败：%2</translation>
     </message>
     <message>
         <location filename="../model/session/BlockWriter.cpp" line="28"/>
@@ -4608,12 +4595,12 @@ Configuration changes written but not stored are discarded.</source>
         <translation>应答过短</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="291"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已写入，但回读失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="300"/>
+        <location filename="../model/session/DeviceSession.cpp" line="263"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>校验失败：写入 %1，设备中为 %2</translation>
     </message>
@@ -4814,119 +4801,119 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::DriveStatusPoller</name>
+    <name>opentop::DriveStatus</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="8"/>
         <source>not polled yet</source>
         <translation>尚未轮询</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="10"/>
         <source>online</source>
         <translation>在线</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="12"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>无应答（连续 %n 次轮询）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="13"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通信错误（连续 %n 次）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="19"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="31"/>
         <source>Status not known yet</source>
         <translation>状态未知</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="21"/>
         <source>No answer: %1</source>
         <translation>无应答：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
-        <source>Alarm %1 %2</source>
-        <translation>报警 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
-        <source>Alarm %1h (not in the alarm table)</source>
-        <translation>报警 %1h（不在报警表中）</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
-        <source>Alarm active</source>
-        <translation>报警中</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="24"/>
         <source>Communication error: %1</source>
         <translation>通信错误：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="34"/>
+        <source>Alarm %1 %2</source>
+        <translation>报警 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="36"/>
+        <source>Alarm %1h (not in the alarm table)</source>
+        <translation>报警 %1h（不在报警表中）</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="38"/>
+        <source>Alarm active</source>
+        <translation>报警中</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="42"/>
         <source>Running</source>
         <translation>运行中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CCW</source>
         <translation>CCW 运行中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CW</source>
         <translation>CW 运行中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="45"/>
         <source>Stopped, no alarm</source>
         <translation>已停止，无报警</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="52"/>
         <source>grey</source>
         <translation>灰色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="54"/>
         <source>green</source>
         <translation>绿色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="56"/>
         <source>orange</source>
         <translation>橙色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="58"/>
         <source>sky blue</source>
         <translation>天蓝色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="60"/>
         <source>red</source>
         <translation>红色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="62"/>
         <source>purple</source>
         <translation>紫色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="64"/>
         <source>blue</source>
         <translation>蓝色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="101"/>
         <source>%1; %2</source>
         <translation>%1；%2</translation>
     </message>
@@ -5233,117 +5220,102 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="53"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="56"/>
         <source>identifying</source>
         <translation>正在识别</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
         <source>no drive answers at machine number %1</source>
         <translation>站号 %1 上没有驱动器应答</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>站号 %1 上的驱动器未识别：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="90"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="99"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>是 %1 驱动器，配方需要 %2 驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>固件 %1，配方允许 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="95"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="104"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
         <source>no profile for the family %1</source>
         <translation>没有系列 %1 的设备描述</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="183"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>cannot read whether the motor runs or an alarm is active: %1</source>
         <translation>无法读取电机是否在运行或是否有报警：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="184"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="194"/>
         <source>no answer</source>
         <translation>无应答</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="191"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>its motor was running before the test</source>
         <translation>测试前其电机已在运行</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="192"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>测试前电机已在运行（上次运行中断遗留？）；未写入任何内容：请先停止（全部停止，或在驱动器上停止）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="199"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
         <translation>测试前已有报警（上一台产品遗留？）；未写入任何内容：请复位报警后重新测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="219"/>
         <source>writing the settings</source>
         <translation>正在写入设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="251"/>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="258"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="224"/>
         <source>writing the settings: %1</source>
         <translation>正在写入设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
         <source>reading every setting back</source>
         <translation>正在回读全部设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="281"/>
-        <source>%1 cannot be read back: %2</source>
-        <translation>%1 无法回读：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="287"/>
-        <source>%1 does not keep its value: set to %2, reads %3</source>
-        <translation>%1 未保持其值：设定为 %2，读取为 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="291"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
         <source>verifying the settings: %1</source>
         <translation>正在校验设定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="305"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="252"/>
         <source>arming the communication-loss stop</source>
         <translation>启用通信中断停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="319"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>testing</source>
         <translation>正在测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="323"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
         <source>step %1 of %2: %3</source>
         <translation>步骤 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="386"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="335"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -6227,196 +6199,155 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="58"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>在下线工位设定并测试一台产品；记录结果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>产品序列号（按条码读取）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>无用户的工位上的测试者（默认：登录名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>本工位名称（默认：主机名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含单台数值的 CSV 文件，按序列号对应。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="107"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由操作员输入的单台数值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技术员许可配方规则不允许的重新测试（已合格的序列号，或测试次数已用完）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="144"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：请写成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="113"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="172"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允许 %3；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="174"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>any %1 variant</source>
         <translation>任何 %1 机型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="183"/>
+        <location filename="../cli/EolRunCommand.cpp" line="147"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在站号 %2 没有位置；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="197"/>
+        <location filename="../cli/EolRunCommand.cpp" line="161"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="212"/>
+        <location filename="../cli/EolRunCommand.cpp" line="176"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方无效；未发送任何内容：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="243"/>
+        <location filename="../cli/EolRunCommand.cpp" line="207"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="247"/>
+        <location filename="../cli/EolRunCommand.cpp" line="211"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：单元 %1（开始于 %2）因工作站进程已结束而未完成，现已记录为“中断”。请确认其电机已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="252"/>
+        <location filename="../cli/EolRunCommand.cpp" line="216"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 条结果尚未能发送到结果数据库</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="278"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>error: %1; nothing was sent</source>
         <translation>错误：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="280"/>
+        <location filename="../cli/EolRunCommand.cpp" line="307"/>
         <source>a technician allows it with --retest</source>
         <translation>技术员可用 --retest 许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="284"/>
+        <location filename="../cli/EolRunCommand.cpp" line="259"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；按 --retest 的许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="304"/>
+        <location filename="../cli/EolRunCommand.cpp" line="268"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="313"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驱动器未确认停止；未进行任何检测</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="348"/>
-        <location filename="../cli/EolRunCommand.cpp" line="369"/>
-        <source>drive %1</source>
-        <translation>驱动器 %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>ok</source>
-        <translation>正常</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>FAIL</source>
-        <translation>不合格</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="392"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="423"/>
-        <source>rev. %1</source>
-        <translation>版本 %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
-        <source>attempt %1</source>
-        <translation>第 %1 次测试</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="432"/>
-        <source>the result was NOT recorded: %1</source>
-        <translation>结果未记录：%1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="434"/>
-        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
-        <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="439"/>
-        <source>WARNING: motor not confirmed stopped: %1</source>
-        <translation>警告：未确认电机已停止：%1</translation>
     </message>
 </context>
 <context>
@@ -6466,6 +6397,68 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
 </context>
 <context>
+    <name>opentop::EolRunOutput</name>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="85"/>
+        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <source>drive %1</source>
+        <translation>驱动器 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>ok</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>FAIL</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <source>rev. %1</source>
+        <translation>版本 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <source>attempt %1</source>
+        <translation>第 %1 次测试</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <source>the result was NOT recorded: %1</source>
+        <translation>结果未记录：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <source>WARNING: motor not confirmed stopped: %1</source>
+        <translation>警告：未确认电机已停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolSettingsWriter</name>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="69"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="95"/>
+        <source>%1 cannot be read back: %2</source>
+        <translation>%1 无法回读：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="101"/>
+        <source>%1 does not keep its value: set to %2, reads %3</source>
+        <translation>%1 未保持其值：设定为 %2，读取为 %3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolSpeedChart</name>
     <message>
         <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
@@ -6492,259 +6485,93 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="141"/>
-        <source>no results database</source>
-        <translation>无结果数据库</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
-        <source>opening the results database</source>
-        <translation>正在打开结果数据库</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="140"/>
-        <source>NOT REACHABLE (%1); trying again by itself</source>
-        <translation>无法连接（%1）；正在自动重试</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="149"/>
+        <location filename="../model/station/EolStation.cpp" line="120"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="153"/>
+        <location filename="../model/station/EolStation.cpp" line="124"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="158"/>
-        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
-        <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="165"/>
-        <source>the results database is being opened; try again in a moment</source>
-        <translation>正在打开结果数据库；请稍后再试</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="167"/>
-        <source>the results database is not open; nothing is tested unless it is recorded</source>
-        <translation>结果数据库未打开；不记录就不进行测试</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="169"/>
-        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
-        <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units：序列号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="184"/>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="142"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="146"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驱动器确认安全后，单元 %1 会立即开始</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="151"/>
         <source>no serial number</source>
         <translation>无序列号</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="221"/>
-        <source>a drive of the station is not safe: %1</source>
-        <translation>工作站有驱动器不安全：%1</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="256"/>
+        <location filename="../model/station/EolStation.cpp" line="182"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>序列号 %1 重新测试,由 %2 批准:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="292"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>no unit was started yet</source>
         <translation>尚未开始任何产品的测试</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="304"/>
-        <source>cancelled before it started</source>
-        <translation>开始前已取消</translation>
     </message>
 </context>
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
-        <source>allowed %1–%2 %3</source>
-        <translation>允许 %1–%2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
-        <source>allowed at most %1 %2</source>
-        <translation>最多允许 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
-        <source>allowed at least %1 %2</source>
-        <translation>至少允许 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="118"/>
         <source>step %1 (%2)</source>
         <translation>步骤 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="131"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="124"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="148"/>
         <source>the drive&apos;s session ended</source>
         <translation>驱动器会话已结束</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="204"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="224"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="236"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="197"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="215"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="225"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="216"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="209"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1：驱动器没有通信优先级</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="266"/>
-        <source>%1: the drive stopped answering: %2</source>
-        <translation>%1：驱动器停止应答：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="274"/>
-        <source>%1: the drive raised an alarm while running</source>
-        <translation>%1：驱动器在运行中发生报警</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="297"/>
-        <source>%1: %2 %3</source>
-        <translation>%1：%2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="316"/>
-        <source>%1: the drive has no speed to wait for</source>
-        <translation>%1：驱动器没有可等待的速度</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
-        <source>time to reach speed</source>
-        <translation>到达速度时间</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="353"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="354"/>
-        <source>unknown</source>
-        <translation>未知</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="355"/>
-        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
-        <translation>%1：未在 %5 s 内达到 %2 %3 ±%4 %3（最后读取 %6 %3）</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="356"/>
-        <source>its target</source>
-        <translation>其目标值</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="413"/>
-        <source>%1 could not be read</source>
-        <translation>无法读取 %1</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="423"/>
-        <source>%1 %2 %3, %4</source>
-        <translation>%1 %2 %3，%4</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="441"/>
-        <source>%1: the drive reports no alarms</source>
-        <translation>%1：驱动器未报告报警</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="454"/>
-        <source>alarms raised</source>
-        <translation>发生的报警</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="457"/>
-        <source>%1: the drive has an alarm</source>
-        <translation>%1：驱动器有报警</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>time to stop</source>
-        <translation>停止时间</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="479"/>
-        <source>%1: stopped after %2 s, allowed at most %3 s</source>
-        <translation>%1：%2 s 后停止，最多允许 %3 s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
-        <source>%1: nothing to read</source>
-        <translation>%1：无可读取内容</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
-        <source>%1 (%2)</source>
-        <translation>%1（%2）</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
-        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
-        <translation>%1：%2 读取为 &quot;%3&quot;，预期为 &quot;%4&quot;</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
-        <source>%1: %2 reads %3 %4, %5</source>
-        <translation>%1：%2 读取为 %3 %4，%5</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="256"/>
         <source>the stop command failed: %1</source>
         <translation>停止命令失败：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="269"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 后停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="270"/>
         <source>not confirmed stopped: %1</source>
         <translation>未确认已停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
         <source>communication priority could not be given back: %1</source>
         <translation>无法交还通信优先级：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="157"/>
         <source>the steps ended with the motor running</source>
         <translation>步骤结束时电机仍在运行</translation>
     </message>
@@ -7698,6 +7525,90 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
 </context>
 <context>
+    <name>opentop::GoldenRecipeSource</name>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="39"/>
+        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>已从 %1 新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="55"/>
+        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
+        <translation>站号 %1 不是总线上的已知驱动器；请先扫描总线</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Reading the golden unit&apos;s settings…</source>
+        <translation>正在读取标准样机的设定…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="73"/>
+        <source>machine number %1 is not on the bus</source>
+        <translation>站号 %1 不在总线上</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="86"/>
+        <source>cancelled: no recipe was made</source>
+        <translation>已取消：未生成配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>New recipe</source>
+        <translation>新建配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <source>Product name:</source>
+        <translation>产品名称：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>Revision:</source>
+        <translation>版本：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="111"/>
+        <source>Golden unit&apos;s backup file</source>
+        <translation>标准样机的备份文件</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="112"/>
+        <source>Backups (*.json)</source>
+        <translation>备份 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="124"/>
+        <source>No drives on the bus: connect and scan first.</source>
+        <translation>总线上没有驱动器：请先连接并扫描。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="132"/>
+        <source>New recipe from drives</source>
+        <translation>从驱动器新建配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="133"/>
+        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
+        <translation>标准样机各驱动器的站号（已找到：%1）：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="143"/>
+        <source>&quot;%1&quot; is not a machine number (1–247)</source>
+        <translation>&quot;%1&quot; 不是站号（1–247）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="152"/>
+        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>已从总线上的驱动器新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GroupCheck</name>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="62"/>
@@ -8423,6 +8334,34 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
     </message>
 </context>
 <context>
+    <name>opentop::LimitCheck</name>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="35"/>
+        <source>%1 could not be read</source>
+        <translation>无法读取 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="50"/>
+        <source>%1 %2 %3, %4</source>
+        <translation>%1 %2 %3，%4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="73"/>
+        <source>allowed %1–%2 %3</source>
+        <translation>允许 %1–%2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="75"/>
+        <source>allowed at most %1 %2</source>
+        <translation>最多允许 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="77"/>
+        <source>allowed at least %1 %2</source>
+        <translation>至少允许 %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>opentop::LineFormat</name>
     <message>
         <location filename="../transport/LineFormat.cpp" line="37"/>
@@ -8699,33 +8638,33 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="55"/>
+        <location filename="../ui/main/MainWindow.cpp" line="58"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="141"/>
+        <location filename="../ui/main/MainWindow.cpp" line="127"/>
         <source>connect elsewhere</source>
         <translation>连接到其他总线</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="164"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在连接 %1…（仍连接着 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="158"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已连接：%1（新连接失败：%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
-        <location filename="../ui/main/MainWindow.cpp" line="220"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="175"/>
         <source>Cannot connect</source>
         <translation>无法连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -8734,80 +8673,70 @@ Still connected to %2; nothing was changed.</source>
 仍连接着 %2；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="210"/>
-        <location filename="../ui/main/MainWindow.cpp" line="342"/>
+        <location filename="../ui/main/MainWindow.cpp" line="165"/>
+        <location filename="../ui/main/MainWindow.cpp" line="242"/>
         <source>Not connected: %1</source>
         <translation>未连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="281"/>
-        <source>Communication groups: %1 (Bus › Communication groups)</source>
-        <translation>通信组：%1（总线 › 通信组）</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
-        <location filename="../ui/main/MainWindow.cpp" line="314"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Connection lost: %1</source>
         <translation>连接丢失：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="224"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模拟总线（无硬件）— %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="225"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="321"/>
+        <location filename="../ui/main/MainWindow.cpp" line="226"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="241"/>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="348"/>
+        <location filename="../ui/main/MainWindow.cpp" line="248"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已连接：%1（模拟，无硬件）</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="376"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>驱动器未报告其机型；%1 为所设定的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="293"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="413"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
         <source>Not connected (disconnected)</source>
         <translation>未连接（已断开）</translation>
     </message>
+</context>
+<context>
+    <name>opentop::MissingValues</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
-        <location filename="../ui/main/MainWindow.cpp" line="454"/>
-        <source>quit</source>
-        <translation>退出</translation>
+        <location filename="../model/session/MissingValues.cpp" line="18"/>
+        <source>cannot check the value: reading %1 failed: %2</source>
+        <translation>无法检查该值：读取 %1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
-        <source>Unwritten changes</source>
-        <translation>未写入的修改</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="441"/>
-        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
-        <translation>
-            <numerusform>有 %n 项修改尚未写入驱动器。退出并放弃这些修改？</numerusform>
-        </translation>
+        <location filename="../model/session/MissingValues.cpp" line="41"/>
+        <source>reading %1 failed: %2</source>
+        <translation>读取 %1 失败：%2</translation>
     </message>
 </context>
 <context>
@@ -9241,17 +9170,17 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>各驱动器的单位不同（%1）；请逐台写入。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="234"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驱动器 %1（%2）不允许：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="241"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>驱动器 %1 的通信组不允许：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
         <source>None of the selected drives is identified.</source>
         <translation>所选驱动器均未识别。</translation>
     </message>
@@ -9289,56 +9218,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>设置(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>将 %1 写入站号 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="347"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="352"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在将 %1 写入 %n 台驱动器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已在 %n 台驱动器中的 %1 台上写入并校验。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="375"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
         <source>writing…</source>
         <translation>正在写入…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
         <source>Written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已写入，未校验（无法回读）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="396"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Failed: %1</source>
         <translation>失败：%1</translation>
     </message>
@@ -10428,72 +10357,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="61"/>
         <source>Open recipe…</source>
         <translation>打开配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="62"/>
         <source>Per-unit values…</source>
         <translation>单台数值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Scan or type the serial number, then Enter</source>
-        <translation>扫描或输入序列号，然后按 Enter</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="91"/>
-        <source>Cancel unit (Esc)</source>
-        <translation>取消本台测试（Esc）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Now</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Time</source>
-        <translation>时间</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Serial</source>
-        <translation>序列号</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Verdict</source>
-        <translation>判定</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Reason</source>
-        <translation>原因</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="164"/>
         <source>Unit %1: %2…</source>
         <translation>产品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="226"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Recipe not usable</source>
         <translation>配方不可用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="227"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="199"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10502,169 +10401,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>open another recipe</source>
         <translation>打开其他配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="231"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版本 %2 — %n 台驱动器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;无：请打开该产品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工位 %1 · 结果：%2 · 单台数值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>loaded</source>
         <translation>已载入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
-        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
-        <translation>序列号 %1 未被接受：单元 %2 正在检测中。请在其判定结果显示后再扫描一次。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
-        <source>another</source>
-        <translation>另一个单元</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
-        <source>Per-unit value</source>
-        <translation>单台数值</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
-        <source>Drive %1: %2 (%3–%4 %5)</source>
-        <translation>驱动器 %1：%2（%3–%4 %5）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>单元 %1：先使工作站的驱动器进入安全状态…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
-        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
-        <translation>正在使配方的驱动器进入安全状态：逐一读取、停止仍在运转者、将控制权交还其输入端子…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="366"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="371"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="292"/>
         <source>Unit %1 — attempt %2</source>
         <translation>产品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：结果服务器没有响应。服务器响应后会自动发送。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
-        <source>%1, NOT RECORDED</source>
-        <translation>%1，未记录</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="410"/>
-        <source>%1 (kept on this station)</source>
-        <translation>%1（保存在本工作站）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 结果数据库恢复后，已于 %2 记录。</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
-        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
-        <translation>
-            <numerusform>本工作站保存了 %n 条结果，尚未存入结果数据库：%1。数据库响应后会按顺序自动发送。</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
-        <source>it does not answer</source>
-        <translation>数据库没有响应</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="475"/>
-        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
-        <translation>单元 %1（开始于 %2）未完成：工作站在检测中停止。已记录为“中断”，请重新检测。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="190"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="312"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
 记录完成前不进行任何测试。工作站会自动重试（下次 %4）；请将此产品放在一边。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="401"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10674,39 +10521,87 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::ProfileCrossCheck</name>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="49"/>
+        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
+        <translation>%1：storeWith &quot;%2&quot; 不是命令参数</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="52"/>
+        <source>%1: the default is not among its allowed values</source>
+        <translation>%1：默认值不在允许值范围内</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="56"/>
+        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
+        <translation>%1：位域 &quot;%2&quot;：功能 &quot;%3&quot; 不是可读参数</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="63"/>
+        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
+        <translation>%1：条件引用了未知参数 &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="65"/>
+        <source>%1: the default is not allowed when %2</source>
+        <translation>%1：当 %2 时不允许使用默认值</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="75"/>
+        <source>%1 runs past address 0xFFFF</source>
+        <translation>%1 超出地址 0xFFFF</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="78"/>
+        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
+        <translation>%1 与 &quot;%2&quot; 在 0x%3 处重叠（%4 个寄存器）</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="107"/>
+        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
+        <translation>identify：&quot;%1&quot; 必须是 identify 读取范围内的参数</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="110"/>
+        <source>identify.nameMatch is not a valid regular expression</source>
+        <translation>identify.nameMatch 不是有效的正则表达式</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="345"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>偏移 %1 处不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="349"/>
         <source>the top level must be a JSON object</source>
         <translation>顶层必须是 JSON 对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 为空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="371"/>
         <source>must be an object</source>
         <translation>必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="373"/>
         <source>name repeated</source>
         <translation>名称重复</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="468"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="384"/>
         <source>texts: {setting:…} names no parameter (%1)</source>
         <translation>texts：{setting:…} 指向的参数不存在（%1）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="477"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="393"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：无法打开：%2</translation>
     </message>
@@ -11181,218 +11076,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="40"/>
         <source>Recipe editor</source>
         <translation>配方编辑器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
         <source>Revision:</source>
         <translation>版本：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
         <source>Product:</source>
         <translation>产品：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Description:</source>
         <translation>说明：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="72"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>从总线上的驱动器新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>从备份文件新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>打开…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="114"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>另存为…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>从标准样机在总线上的驱动器或其备份文件生成配方，或打开已有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>配方为空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通过检查：可以保存和运行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 个问题：修正之前无法保存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通过检查（%n 个问题）；未保存任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>已打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已打开 %1，但它无法按原样载入（%2）。保存时会进行检查并重新签名。</translation>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
-        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>已从 %1 新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
-        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
-        <translation>站号 %1 不是总线上的已知驱动器；请先扫描总线</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Reading the golden unit&apos;s settings…</source>
-        <translation>正在读取标准样机的设定…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Cancel</source>
-        <translation>取消</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="356"/>
-        <source>machine number %1 is not on the bus</source>
-        <translation>站号 %1 不在总线上</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="369"/>
-        <source>cancelled: no recipe was made</source>
-        <translation>已取消：未生成配方</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
-        <source>New recipe</source>
-        <translation>新建配方</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <source>Product name:</source>
-        <translation>产品名称：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
-        <source>Golden unit&apos;s backup file</source>
-        <translation>标准样机的备份文件</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="405"/>
-        <source>Backups (*.json)</source>
-        <translation>备份 (*.json)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
-        <source>No drives on the bus: connect and scan first.</source>
-        <translation>总线上没有驱动器：请先连接并扫描。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
-        <source>New recipe from drives</source>
-        <translation>从驱动器新建配方</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="426"/>
-        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
-        <translation>标准样机各驱动器的站号（已找到：%1）：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="436"/>
-        <source>&quot;%1&quot; is not a machine number (1–247)</source>
-        <translation>&quot;%1&quot; 不是站号（1–247）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="445"/>
-        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>已从总线上的驱动器新建配方：请检查设定和测试步骤的限值，然后保存。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="456"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Save recipe</source>
         <translation>保存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
         <source>Saved and signed: %1</source>
         <translation>已保存并签名：%1</translation>
     </message>
@@ -12350,6 +12168,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RelayAutotune</name>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="65"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>运行速度必须大于 0 且小于测试的速度限值 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="72"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>继电器幅值必须为最大输出的 0–50 %</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="75"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>开环：正在寻找 %1 %2 所需的输出</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="148"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>输出 %1 % 时电机未转动</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="180"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>运行速度需要 %1 % 的输出：上下没有 ±%2 % 的余量</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="185"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>正在 %1 %2 附近进行继电器测试（输出 %3 % ± %4 %）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="224"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 内未出现稳定振荡：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="226"/>
+        <source>try a larger amplitude</source>
+        <translation>请尝试加大幅值</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="259"/>
+        <source>the relay result was refused: %1</source>
+        <translation>继电器测试结果不予采用：%1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayTuning</name>
     <message>
         <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
@@ -13142,251 +13008,254 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>下线检测结果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>首个不合格项</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>导出 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>检验证书 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
-        <source>SQLite file or postgresql://user@host/database</source>
-        <translation>SQLite 文件或 postgresql://user@host/database</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
-        <source>Open</source>
-        <translation>打开</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
-        <source>File…</source>
-        <translation>文件…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
-        <source>any; * and ? as wildcards (SN-10*)</source>
-        <translation>全部；可用 * 和 ? 作通配符（SN-10*）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
-        <source>any</source>
-        <translation>任意</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
-        <source>Today</source>
-        <translation>今天</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
-        <source>Last 24 hours</source>
-        <translation>最近 24 小时</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
-        <source>Last 7 days</source>
-        <translation>最近 7 天</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
-        <source>Last 30 days</source>
-        <translation>最近 30 天</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
-        <source>All</source>
-        <translation>全部</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
-        <source>Any</source>
-        <translation>任意</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
-        <source>Search</source>
-        <translation>搜索</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
-        <source>Serial:</source>
-        <translation>序列号：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
-        <source>Recipe:</source>
-        <translation>配方：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
-        <source>Station:</source>
-        <translation>工位：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
-        <source>Period:</source>
-        <translation>时间段：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
-        <source>Verdict:</source>
-        <translation>判定：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
-        <source>Database:</source>
-        <translation>数据库：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 处尚无结果数据库：工位记录第一台产品时会创建它。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Opening the results database %1…</source>
         <translation>正在打开结果数据库 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Results database %1</source>
         <translation>结果数据库 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
         <source>Searching…</source>
         <translation>正在搜索…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="344"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
         <source>the results database is not open</source>
         <translation>结果数据库未打开</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="292"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>%n 台产品：合格 %1，不合格 %2，工位错误 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="372"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
         <source>no unit is selected</source>
         <translation>未选择产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="324"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
         <source>Reading unit %1…</source>
         <translation>正在读取产品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在读取该产品的记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="382"/>
-        <source>Open results database</source>
-        <translation>打开结果数据库</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
-        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
-        <translation>SQLite 数据库 (*.db *.sqlite);;所有文件 (*)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>Export units as CSV</source>
         <translation>将产品导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 台产品写入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="409"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
         <source>Save certificate</source>
         <translation>保存检验证书</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 文件 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
         <source>Certificate written to %1</source>
         <translation>检验证书已写入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultsFilterBar</name>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="21"/>
+        <source>SQLite file or postgresql://user@host/database</source>
+        <translation>SQLite 文件或 postgresql://user@host/database</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="22"/>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="23"/>
+        <source>File…</source>
+        <translation>文件…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="30"/>
+        <source>any; * and ? as wildcards (SN-10*)</source>
+        <translation>全部；可用 * 和 ? 作通配符（SN-10*）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="32"/>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="34"/>
+        <source>any</source>
+        <translation>任意</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="36"/>
+        <source>Today</source>
+        <translation>今天</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="37"/>
+        <source>Last 24 hours</source>
+        <translation>最近 24 小时</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="38"/>
+        <source>Last 7 days</source>
+        <translation>最近 7 天</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="39"/>
+        <source>Last 30 days</source>
+        <translation>最近 30 天</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="40"/>
+        <source>All</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="43"/>
+        <source>Any</source>
+        <translation>任意</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="47"/>
+        <source>Search</source>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="51"/>
+        <source>Serial:</source>
+        <translation>序列号：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="52"/>
+        <source>Recipe:</source>
+        <translation>配方：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="53"/>
+        <source>Station:</source>
+        <translation>工位：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="54"/>
+        <source>Period:</source>
+        <translation>时间段：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="55"/>
+        <source>Verdict:</source>
+        <translation>判定：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="63"/>
+        <source>Database:</source>
+        <translation>数据库：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="105"/>
+        <source>Open results database</source>
+        <translation>打开结果数据库</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="106"/>
+        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
+        <translation>SQLite 数据库 (*.db *.sqlite);;所有文件 (*)</translation>
     </message>
 </context>
 <context>
@@ -14044,6 +13913,39 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialEntry</name>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="37"/>
+        <source>Scan or type the serial number, then Enter</source>
+        <translation>扫描或输入序列号，然后按 Enter</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="38"/>
+        <source>Cancel unit (Esc)</source>
+        <translation>取消本台测试（Esc）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="95"/>
+        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
+        <translation>序列号 %1 未被接受：单元 %2 正在检测中。请在其判定结果显示后再扫描一次。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="97"/>
+        <source>another</source>
+        <translation>另一个单元</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="111"/>
+        <source>Per-unit value</source>
+        <translation>单台数值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="112"/>
+        <source>Drive %1: %2 (%3–%4 %5)</source>
+        <translation>驱动器 %1：%2（%3–%4 %5）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SerialLineFields</name>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
@@ -14137,152 +14039,110 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="88"/>
+        <location filename="../cli/SetCommand.cpp" line="42"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>按名称写入参数，经过验证、回读和校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="98"/>
+        <location filename="../cli/SetCommand.cpp" line="52"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>按地址写入寄存器：ADDR=VALUE（可重复；配合 --fc 16 时可写 VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 写入的功能码：6（默认）或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="63"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>错误：用法：set ID NAME=VALUE...（例如 set 1 spno2.accel=2.5），或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="121"/>
+        <location filename="../cli/SetCommand.cpp" line="75"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>错误：&quot;%1&quot; 不是 NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="128"/>
-        <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
-        <translation>错误：%1 指定了两次（%2=%3 和 %4）；每项设定只能指定一次；未写入任何内容</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="77"/>
-        <location filename="../cli/SetCommand.cpp" line="139"/>
-        <location filename="../cli/SetCommand.cpp" line="279"/>
+        <location filename="../cli/SetCommand.cpp" line="82"/>
+        <location filename="../cli/SetCommand.cpp" line="91"/>
+        <location filename="../cli/SetCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="149"/>
-        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
-        <translation>%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="152"/>
-        <source>%1 is read-only</source>
-        <translation>%1 为只读</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="154"/>
-        <source>%1 is a %2 command; add --yes to send it</source>
-        <translation>%1 是%2命令；加上 --yes 才会发送</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="209"/>
-        <source>error: cannot read %1 to check the values; nothing written</source>
-        <translation>错误：无法读取 %1 来检查这些值；未写入任何内容</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
-        <location filename="../cli/SetCommand.cpp" line="262"/>
-        <location filename="../cli/SetCommand.cpp" line="273"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="114"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="95"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>确认会使电机运动、复位、清除、初始化或保存的命令，以及串口配置锁定的设定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="250"/>
-        <source>Add --yes to set it.</source>
-        <translation>加上 --yes 才会设定。</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="79"/>
-        <location filename="../cli/SetCommand.cpp" line="280"/>
-        <source>nothing was written</source>
-        <translation>未写入任何内容</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="308"/>
-        <source>not written (interrupted)</source>
-        <translation>未写入（已中断）</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="321"/>
+        <location filename="../cli/SetCommand.cpp" line="146"/>
         <source>next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="323"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（出厂通信设定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="373"/>
+        <location filename="../cli/SetCommand.cpp" line="199"/>
         <source>written, verified</source>
         <translation>已写入，已校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="375"/>
+        <location filename="../cli/SetCommand.cpp" line="201"/>
         <source>written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="376"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written (command, not readable)</source>
         <translation>已写入（命令，不可读）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="378"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；可用 &quot;get&quot; 回读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="215"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetCommand.cpp" line="222"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注意：驱动器从下次上电起使用 %1：请将驱动器断电再上电，然后用新设定（--baud、--parity）连接</translation>
     </message>
@@ -14359,6 +14219,49 @@ This moves or stops a motor: add --yes to send it.</source>
         <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>同时写入了 %1（通信组）；未回读：不是设备描述中的参数</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SettingsWrite</name>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="29"/>
+        <source>%1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
+        <translation>%1 指定了两次（%2=%3 和 %4）；每项设定只能指定一次；未写入任何内容</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="76"/>
+        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
+        <translation>%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="80"/>
+        <source>%1 is read-only</source>
+        <translation>%1 为只读</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="83"/>
+        <source>%1 is a %2 command; add --yes to send it</source>
+        <translation>%1 是%2命令；加上 --yes 才会发送</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="105"/>
+        <source>cannot read %1 to check the values; nothing written</source>
+        <translation>无法读取 %1 来检查这些值；未写入任何内容</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="157"/>
+        <source>Add --yes to set it.</source>
+        <translation>加上 --yes 才会设定。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="229"/>
+        <source>interrupted as it was sent</source>
+        <translation>发送时已中断</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="231"/>
+        <source>not written (interrupted)</source>
+        <translation>未写入（已中断）</translation>
     </message>
 </context>
 <context>
@@ -15480,11 +15383,74 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StationNotice</name>
+    <message numerus="yes">
+        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>本工作站保存了 %n 条结果，尚未存入结果数据库：%1。数据库响应后会按顺序自动发送。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <source>it does not answer</source>
+        <translation>数据库没有响应</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>单元 %1（开始于 %2）未完成：工作站在检测中停止。已记录为“中断”，请重新检测。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
+        <translation>正在使配方的驱动器进入安全状态：逐一读取、停止仍在运转者、将控制权交还其输入端子…</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationRecipe</name>
     <message>
         <location filename="../model/station/StationRecipe.cpp" line="68"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>该配方从 CSV 文件获取单台数值：请先打开该文件</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationResults</name>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="63"/>
+        <source>opening the results database</source>
+        <translation>正在打开结果数据库</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="65"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>无法连接（%1）；正在自动重试</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="66"/>
+        <source>no results database</source>
+        <translation>无结果数据库</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="72"/>
+        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
+        <translation>产品 %1 的结果（%2）尚未写入结果数据库：写入之前不进行任何测试。工作站会自动重试（%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="77"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>正在打开结果数据库；请稍后再试</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="79"/>
+        <source>the results database is not open; nothing is tested unless it is recorded</source>
+        <translation>结果数据库未打开；不记录就不进行测试</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="80"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>无法连接结果数据库（%1）；不记录就不进行测试。工作站会自动重试。</translation>
     </message>
 </context>
 <context>
@@ -15582,6 +15548,109 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StepMeasure</name>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="85"/>
+        <source>%1: the drive stopped answering: %2</source>
+        <translation>%1：驱动器停止应答：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="93"/>
+        <source>%1: the drive raised an alarm while running</source>
+        <translation>%1：驱动器在运行中发生报警</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="113"/>
+        <source>%1: %2 %3</source>
+        <translation>%1：%2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="132"/>
+        <source>%1: the drive has no speed to wait for</source>
+        <translation>%1：驱动器没有可等待的速度</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="155"/>
+        <source>time to reach speed</source>
+        <translation>到达速度时间</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="159"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="167"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="168"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="169"/>
+        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
+        <translation>%1：未在 %5 s 内达到 %2 %3 ±%4 %3（最后读取 %6 %3）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="170"/>
+        <source>its target</source>
+        <translation>其目标值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="205"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="220"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="240"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="301"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="215"/>
+        <source>%1: the drive reports no alarms</source>
+        <translation>%1：驱动器未报告报警</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="225"/>
+        <source>alarms raised</source>
+        <translation>发生的报警</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="227"/>
+        <source>%1: the drive has an alarm</source>
+        <translation>%1：驱动器有报警</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="234"/>
+        <source>%1: nothing to read</source>
+        <translation>%1：无可读取内容</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="248"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="251"/>
+        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
+        <translation>%1：%2 读取为 &quot;%3&quot;，预期为 &quot;%4&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="259"/>
+        <source>%1: %2 reads %3 %4, %5</source>
+        <translation>%1：%2 读取为 %3 %4，%5</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>time to stop</source>
+        <translation>停止时间</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="303"/>
+        <source>%1: stopped after %2 s, allowed at most %3 s</source>
+        <translation>%1：%2 s 后停止，最多允许 %3 s</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StepMetrics</name>
     <message>
         <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
@@ -15592,6 +15661,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
         <source>too few samples after the step (%1)</source>
         <translation>阶跃后的采样点过少（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTest</name>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="39"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>阶跃测试以正转从一个速度变到另一个速度：起始速度和目标速度必须不同，且不小于 0</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="47"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2 超出测试的速度限值 %3 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="55"/>
+        <source>Running to %1 %2</source>
+        <translation>正在运行至 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="88"/>
+        <source>Step to %1 %2</source>
+        <translation>阶跃至 %1 %2</translation>
     </message>
 </context>
 <context>
@@ -16301,85 +16393,85 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>对象 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="26"/>
         <source>Cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未打开</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <source>send failed</source>
         <translation>发送失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之后又收到一个应答：这个应答可能是对之前请求的应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>驱动器自己的通信格式需要串口；Modbus TCP 网关自行设定它的线路</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>无法把线路切换到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>来自从站 %1 的应答，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
         <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>应答不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
         <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
         <source> (connection closed)</source>
         <translation> （连接已关闭）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <source>stale bytes discarded before sending</source>
         <translation>发送前丢弃了残留字节</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
         <source>late bytes discarded after an error</source>
         <translation>出错后丢弃了迟到的字节</translation>
     </message>
@@ -17437,6 +17529,87 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuningDrive</name>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="50"/>
+        <source>a tuning test is already running</source>
+        <translation>已有整定测试正在进行</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="88"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>正在读取驱动器设定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="98"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>无法读取驱动器设定：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="139"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>驱动器不处于闭环速度模式：请先将 %1（%2）设为 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="141"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="146"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>正在将通信中断停止时间设为 %1 s</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="201"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>驱动器停止应答：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="221"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>速度 %1 %2 超出测试限值 %3 %2：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="228"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>电流 %1 A 超出测试限值 %2 A：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="234"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="271"/>
+        <source>Stopping the motor</source>
+        <translation>正在停止电机</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="303"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>电机已停止（已确认）</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="304"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>无法确认电机已停止：请检查电机</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningDriveSettings</name>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="53"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>无法读取速度模式：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="56"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>驱动器不处于闭环速度模式（当前：%1）。请先在其设定页面中选择一种闭环模式。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::TuningGains</name>
     <message>
         <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
@@ -17600,125 +17773,105 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
-        <source>STOP</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
-        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
-        <translation>取消正在进行的测试：停止电机并确认已停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="53"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
         <source>Step test</source>
         <translation>阶跃测试</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="54"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Relay autotune</source>
         <translation>继电器自整定</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="112"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>就绪。确认测试之前，电机不会运行。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
-        <source>Could not read the speed mode: %1</source>
-        <translation>无法读取速度模式：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
-        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
-        <translation>驱动器不处于闭环速度模式（当前：%1）。请先在其设定页面中选择一种闭环模式。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="191"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>限值：%1 %2，%3。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>no current limit</source>
         <translation>无电流限值</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="208"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1 的电机将以当前速度模式从 %2 运行到 %3 %4，持续约 %5 s，然后停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Run</source>
         <translation>执行</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="229"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1 的电机将以开环方式（速度环关闭）在 %2 %3 附近运行，输出以 ±%4 % 切换，最长 %5 s，然后停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="252"/>
         <source>Stop command sent.</source>
         <translation>已发送停止命令。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="253"/>
         <source>Stop command failed: %1</source>
         <translation>停止命令失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="263"/>
         <source>Stopping…</source>
         <translation>正在停止…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="277"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>测试 %1：%2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="296"/>
         <source>Step test done.</source>
         <translation>阶跃测试完成。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="297"/>
         <source>Step test ended: %1</source>
         <translation>阶跃测试结束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="302"/>
         <source>The test was stopped</source>
         <translation>测试已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="333"/>
         <source>Autotune ended: %1</source>
         <translation>自整定结束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="335"/>
         <source>The autotune was stopped</source>
         <translation>自整定已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="344"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>预测：%1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>自整定完成：建议值 %1。接受后将写入驱动器。</translation>
     </message>
@@ -17783,194 +17936,61 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
-    <name>opentop::TuningRunner</name>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
-        <source>a tuning test is already running</source>
-        <translation>已有整定测试正在进行</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
-        <source>Reading the drive&apos;s settings</source>
-        <translation>正在读取驱动器设定</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
-        <source>could not read the drive&apos;s settings: %1</source>
-        <translation>无法读取驱动器设定：%1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
-        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
-        <translation>驱动器不处于闭环速度模式：请先将 %1（%2）设为 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
-        <source> or </source>
-        <translation> 或 </translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
-        <source>Setting the communication-loss braking time to %1 s</source>
-        <translation>正在将通信中断停止时间设为 %1 s</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
-        <source>the drive stopped answering: %1</source>
-        <translation>驱动器停止应答：%1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
-        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
-        <translation>速度 %1 %2 超出测试限值 %3 %2：已立即停止</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
-        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
-        <translation>电流 %1 A 超出测试限值 %2 A：已立即停止</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
-        <source>cancelled</source>
-        <translation>已取消</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
-        <source>Stopping the motor</source>
-        <translation>正在停止电机</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
-        <source>motor stopped (confirmed)</source>
-        <translation>电机已停止（已确认）</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
-        <source>the motor could not be confirmed stopped: check it</source>
-        <translation>无法确认电机已停止：请检查电机</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
-        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
-        <translation>阶跃测试以正转从一个速度变到另一个速度：起始速度和目标速度必须不同，且不小于 0</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
-        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
-        <translation>%1 %2 超出测试的速度限值 %3 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
-        <source>Running to %1 %2</source>
-        <translation>正在运行至 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
-        <source>Step to %1 %2</source>
-        <translation>阶跃至 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
-        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
-        <translation>运行速度必须大于 0 且小于测试的速度限值 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
-        <source>the relay amplitude must be 0–50 % of full output</source>
-        <translation>继电器幅值必须为最大输出的 0–50 %</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
-        <source>Open loop: finding the output for %1 %2</source>
-        <translation>开环：正在寻找 %1 %2 所需的输出</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
-        <source>the motor did not turn at %1 % output</source>
-        <translation>输出 %1 % 时电机未转动</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
-        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
-        <translation>运行速度需要 %1 % 的输出：上下没有 ±%2 % 的余量</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
-        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
-        <translation>正在 %1 %2 附近进行继电器测试（输出 %3 % ± %4 %）</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
-        <source>no steady oscillation within %1 s: %2</source>
-        <translation>%1 s 内未出现稳定振荡：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
-        <source>try a larger amplitude</source>
-        <translation>请尝试加大幅值</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
-        <source>the relay result was refused: %1</source>
-        <translation>继电器测试结果不予采用：%1</translation>
-    </message>
-</context>
-<context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save CSV…</source>
         <translation>保存 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="39"/>
         <source>Save PNG…</source>
         <translation>保存 PNG…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>保存所选测试：其采样数据、增益和指标</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>Saves the chart as it is shown</source>
         <translation>按当前显示保存图表</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="46"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>实线：速度 · 点线：命令 · 点划线：电流（右轴） · 虚线：预测速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="220"/>
         <source>no run to save</source>
         <translation>没有可保存的测试</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="233"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="237"/>
         <source>Save run as CSV</source>
         <translation>将测试保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="234"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="242"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Save chart as PNG</source>
         <translation>将图表保存为 PNG</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="243"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Could not write %1.</source>
         <translation>无法写入 %1。</translation>
     </message>
@@ -17991,6 +18011,19 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1：设备描述的整定部分需要 periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode，以及反馈参数已知的 closedLoopModes</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningStatusRow</name>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="12"/>
+        <source>STOP</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="17"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>取消正在进行的测试：停止电机并确认已停止</translation>
     </message>
 </context>
 <context>
@@ -18032,6 +18065,39 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::UnitLog</name>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Serial</source>
+        <translation>序列号</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Reason</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <source>%1, NOT RECORDED</source>
+        <translation>%1，未记录</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（保存在本工作站）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
@@ -18062,6 +18128,24 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UnitStartGate</name>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="45"/>
+        <source>cancelled before it started</source>
+        <translation>开始前已取消</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="80"/>
+        <source>not connected to a bus</source>
+        <translation>未连接总线</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="85"/>
+        <source>a drive of the station is not safe: %1</source>
+        <translation>工作站有驱动器不安全：%1</translation>
     </message>
 </context>
 <context>
@@ -18201,104 +18285,106 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
-        <source>depends on %1, which is not known yet</source>
-        <translation>取决于 %1，但该项尚未知</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
-        <source>text of up to %1 characters</source>
-        <translation>最多 %1 个字符的文本</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
-        <source> or </source>
-        <translation> 或 </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="63"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1：%2 超出建议范围 %3；该值仍允许，将会写入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
-        <source>, or </source>
-        <translation>，或 </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
-        <source>any value</source>
-        <translation>任意值</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="80"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> （机型未知，因此该值必须适用于 %1；指定机型以使用其自身范围）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="90"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允许值取决于 %2，但该项尚未读取</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="95"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出寄存器范围；允许：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="107"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允许 %2；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="119"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：预期 %2 个寄存器，实际为 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="149"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文本，不是数字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="162"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比步长 %3 %4 更精细；允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="195"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 个字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="200"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允许可打印的 ASCII 字符</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="210"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未给出值；允许：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="250"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 仅在 %3 为 %4 时可用；当前允许：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="263"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="283"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允许：%3</translation>
     </message>
+</context>
+<context>
+    <name>opentop::ValueFormat</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="45"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="65"/>
+        <source>depends on %1, which is not known yet</source>
+        <translation>取决于 %1，但该项尚未知</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="67"/>
+        <source>text of up to %1 characters</source>
+        <translation>最多 %1 个字符的文本</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="73"/>
+        <source>, or </source>
+        <translation>，或 </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="74"/>
+        <source>any value</source>
+        <translation>任意值</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="81"/>
         <source>(invalid)</source>
         <translation>（无效）</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="92"/>
         <source>unknown code %1</source>
         <translation>未知代码 %1</translation>
     </message>

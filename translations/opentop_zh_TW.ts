@@ -260,187 +260,142 @@
         <translation>無回應</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="38"/>
         <source>top level</source>
         <translation>最上層</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="55"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="41"/>
         <source>&quot;schema&quot; must be 1</source>
         <translation>&quot;schema&quot; 必須為 1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="66"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="52"/>
         <source>&quot;family&quot; must be a lower-case id</source>
         <translation>&quot;family&quot; 必須是小寫的 id</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="74"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="60"/>
         <source>serial.parity must be N, E or O</source>
         <translation>serial.parity 必須為 N、E 或 O</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="78"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="64"/>
         <source>serial: baud must be 1200–115200 and stopBits 1 or 2</source>
         <translation>serial：baud 必須為 1200–115200，stopBits 必須為 1 或 2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="90"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="76"/>
         <source>serial.formats: &quot;%1&quot; is not a format such as 8N1 or 8E1</source>
         <translation>serial.formats：「%1」不是 8N1 或 8E1 這類的格式</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="94"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="80"/>
         <source>serial.formats must hold the default format %1</source>
         <translation>serial.formats 必須包含預設格式 %1</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="98"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="84"/>
         <source>serial.powerOnDelayMs must be 0–60000</source>
         <translation>serial.powerOnDelayMs 必須為 0–60000</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="111"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="97"/>
         <source>limits: maxReadRegisters 1–125, maxWriteRegisters 1–123</source>
         <translation>limits：maxReadRegisters 須為 1–125，maxWriteRegisters 須為 1–123</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="113"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="99"/>
         <source>limits: slaves must lie in 1–247</source>
         <translation>limits：slaves 必須在 1–247 範圍內</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="128"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="114"/>
         <source>variants[%1] needs id, model and label</source>
         <translation>variants[%1] 需要 id、model 與 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="130"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="116"/>
         <source>variants[%1]: id &quot;%2&quot; repeated</source>
         <translation>variants[%1]：id &quot;%2&quot; 重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="141"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="127"/>
         <source>groups[%1] needs a unique id and a label</source>
         <translation>groups[%1] 需要唯一的 id 與 label</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="152"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="138"/>
         <source>readBlocks[%1] needs function 3 or 4 and first ≤ last</source>
         <translation>readBlocks[%1] 需要功能碼 3 或 4，且 first ≤ last</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="196"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="182"/>
         <source>%1 has no name</source>
         <translation>%1 沒有名稱</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="198"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="184"/>
         <source>%1: reset must be one of %2</source>
         <translation>%1：reset 必須是 %2 其中之一</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="201"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="187"/>
         <source>%1: code %2 repeated</source>
         <translation>%1：代碼 %2 重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="219"/>
-        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
-        <translation>%1：storeWith &quot;%2&quot; 不是指令參數</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="222"/>
-        <source>%1: the default is not among its allowed values</source>
-        <translation>%1：預設值不在允許值之內</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="226"/>
-        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
-        <translation>%1：位元欄位 &quot;%2&quot;：function &quot;%3&quot; 不是可讀取的參數</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="233"/>
-        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
-        <translation>%1：條件引用了未知參數 &quot;%2&quot;</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="235"/>
-        <source>%1: the default is not allowed when %2</source>
-        <translation>%1：當 %2 時不允許此預設值</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="245"/>
-        <source>%1 runs past address 0xFFFF</source>
-        <translation>%1 超出位址 0xFFFF</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="248"/>
-        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
-        <translation>%1 與 &quot;%2&quot; 在 0x%3 重疊 (%4 個暫存器)</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="272"/>
-        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
-        <translation>identify：&quot;%1&quot; 必須是 identify 讀取範圍內的參數</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="275"/>
-        <source>identify.nameMatch is not a valid regular expression</source>
-        <translation>identify.nameMatch 不是有效的正規表示式</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="287"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="203"/>
         <source>%1: unknown parameter &quot;%2&quot;</source>
         <translation>%1：未知參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="315"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="231"/>
         <source>%1 must be a parameter name, a list of names or an object</source>
         <translation>%1 必須是參數名稱、名稱清單或物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="324"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="240"/>
         <source>%1: &quot;%2&quot; has no bit field &quot;%3&quot;</source>
         <translation>%1：&quot;%2&quot; 沒有位元欄位 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="330"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="246"/>
         <source>%1: %2 is not a value &quot;%3&quot; can be written with</source>
         <translation>%1：%2 不是 &quot;%3&quot; 可寫入的值</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="348"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="264"/>
         <source>decelerationKnobs need the &quot;selected&quot; role</source>
         <translation>decelerationKnobs 需要 &quot;selected&quot; 角色</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="364"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="280"/>
         <source>%1 needs &quot;selected&quot; and &quot;maxSeconds&quot;</source>
         <translation>%1 需要 &quot;selected&quot; 與 &quot;maxSeconds&quot;</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="367"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="283"/>
         <source>%1: &quot;selected&quot; %2 is not a value of the &quot;selected&quot; role, or repeated</source>
         <translation>%1：&quot;selected&quot; %2 不是 &quot;selected&quot; 角色的值，或重複出現</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="372"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="288"/>
         <source>%1: &quot;maxSeconds&quot; must be more than 0 and at most 600</source>
         <translation>%1：&quot;maxSeconds&quot; 必須大於 0 且不超過 600</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="404"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="320"/>
         <source>%1: &quot;light&quot; must be one of %2, each once</source>
         <translation>%1：&quot;light&quot; 必須是 %2 其中之一，且每個只能出現一次</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="407"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="323"/>
         <source>%1: &quot;colour&quot; must be #rrggbb</source>
         <translation>%1：&quot;colour&quot; 必須為 #rrggbb</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="409"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="325"/>
         <source>%1: &quot;label&quot; and &quot;meaning&quot; must not be empty</source>
         <translation>%1：&quot;label&quot; 與 &quot;meaning&quot; 不可為空</translation>
     </message>
@@ -453,6 +408,16 @@
         <location filename="../cli/TuneCommand.cpp" line="27"/>
         <source>not reached</source>
         <translation>未達到</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <source>error: %1</source>
+        <translation>錯誤：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <source>nothing was written</source>
+        <translation>未寫入任何資料</translation>
     </message>
 </context>
 <context>
@@ -874,6 +839,134 @@
     </message>
 </context>
 <context>
+    <name>opentop::AlarmRecordsView</name>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Code</source>
+        <translation>代碼</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Panel</source>
+        <translation>面板</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Name</source>
+        <translation>名稱</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="50"/>
+        <source>Cleared by</source>
+        <translation>解除方式</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="67"/>
+        <source>Cause and remedy</source>
+        <translation>原因與對策</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="68"/>
+        <source>Communication error register</source>
+        <translation>通訊錯誤暫存器</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="75"/>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="115"/>
+        <source>Select a record to see its cause and remedy.</source>
+        <translation>選擇一筆記錄以查看其原因與對策。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="76"/>
+        <source>Not read yet.</source>
+        <translation>尚未讀取。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="126"/>
+        <source>This drive has no communication error register.</source>
+        <translation>此驅動器沒有通訊錯誤暫存器。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="128"/>
+        <source>%1: could not be read.</source>
+        <translation>%1：無法讀取。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="130"/>
+        <source>%1: no error (0).</source>
+        <translation>%1：無錯誤 (0)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="133"/>
+        <source>%1: %2, not a known code.</source>
+        <translation>%1：%2，非已知代碼。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="135"/>
+        <source>%1: %2 %3
+Cause: %4
+Remedy: %5</source>
+        <translation>%1：%2 %3
+原因：%4
+對策：%5</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No alarm records</source>
+        <translation>無警報記錄</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="147"/>
+        <source>No warning records</source>
+        <translation>無警告記錄</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="153"/>
+        <source>%1: could not be read: %2</source>
+        <translation>%1：無法讀取：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="156"/>
+        <source>%1: %2 of %3 records, newest first</source>
+        <translation>%1：共 %3 筆記錄中的 %2 筆，最新的在前</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="167"/>
+        <source>unknown code</source>
+        <translation>未知代碼</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="196"/>
+        <source>Record %1: code %2 is not in the %3 table.</source>
+        <translation>記錄 %1：代碼 %2 不在%3表中。</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="201"/>
+        <source>%1 %2 (record %3)</source>
+        <translation>%1 %2 (記錄 %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="203"/>
+        <source>Cause: %1</source>
+        <translation>原因：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="205"/>
+        <source>Remedy: %1</source>
+        <translation>對策：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/alarms/AlarmRecordsView.cpp" line="207"/>
+        <source>To clear: %1</source>
+        <translation>解除方法：%1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::AlarmsCommand</name>
     <message>
         <location filename="../cli/AlarmsCommand.cpp" line="164"/>
@@ -969,298 +1062,173 @@
 <context>
     <name>opentop::AlarmsPage</name>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="60"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="35"/>
         <source>&amp;Re-read</source>
         <translation>重新讀取(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="61"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="36"/>
         <source>Reset &amp;alarm…</source>
         <translation>警報重置(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="62"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="37"/>
         <source>&amp;Clear records…</source>
         <translation>清除記錄(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="41"/>
         <source>Alarms and warnings of machine %1 (%2)</source>
         <translation>機號 %1 (%2) 的警報與警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>#</source>
-        <translation>#</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Code</source>
-        <translation>代碼</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Panel</source>
-        <translation>面板</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Name</source>
-        <translation>名稱</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="94"/>
-        <source>Cleared by</source>
-        <translation>解除方式</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="111"/>
-        <source>Cause and remedy</source>
-        <translation>原因與對策</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="112"/>
-        <source>Communication error register</source>
-        <translation>通訊錯誤暫存器</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="125"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>送出警報重置指令，並告知警報是否已解除或只能斷電重新上電解除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="127"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驅動器保存的警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="132"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="303"/>
-        <source>Select a record to see its cause and remedy.</source>
-        <translation>選擇一筆記錄以查看其原因與對策。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="133"/>
-        <source>Not read yet.</source>
-        <translation>尚未讀取。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="135"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>此驅動器不保存警報或警告記錄。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="165"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
         <source>Alarm state: %1</source>
         <translation>警報狀態：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
         <source>Reading the records…</source>
         <translation>正在讀取記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
         <source>No alarm is active.</source>
         <translation>目前無警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="275"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
         <source>Alarm active: %1 %2.</source>
         <translation>警報發生中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="277"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
         <source>An alarm is active.</source>
         <translation>有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="280"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)：Alarm-Reset 無法解除任何警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="284"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
         <source>Could not be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
-        <source>This drive has no communication error register.</source>
-        <translation>此驅動器沒有通訊錯誤暫存器。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
-        <source>%1: could not be read.</source>
-        <translation>%1：無法讀取。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
-        <source>%1: no error (0).</source>
-        <translation>%1：無錯誤 (0)。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="317"/>
-        <source>%1: %2, not a known code.</source>
-        <translation>%1：%2，非已知代碼。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="319"/>
-        <source>%1: %2 %3
-Cause: %4
-Remedy: %5</source>
-        <translation>%1：%2 %3
-原因：%4
-對策：%5</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No alarm records</source>
-        <translation>無警報記錄</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="331"/>
-        <source>No warning records</source>
-        <translation>無警告記錄</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="337"/>
-        <source>%1: could not be read: %2</source>
-        <translation>%1：無法讀取：%2</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="340"/>
-        <source>%1: %2 of %3 records, newest first</source>
-        <translation>%1：共 %3 筆記錄中的 %2 筆，最新的在前</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="351"/>
-        <source>unknown code</source>
-        <translation>未知代碼</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="380"/>
-        <source>Record %1: code %2 is not in the %3 table.</source>
-        <translation>記錄 %1：代碼 %2 不在%3表中。</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="385"/>
-        <source>%1 %2 (record %3)</source>
-        <translation>%1 %2 (記錄 %3)</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="387"/>
-        <source>Cause: %1</source>
-        <translation>原因：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="389"/>
-        <source>Remedy: %1</source>
-        <translation>對策：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="391"/>
-        <source>To clear: %1</source>
-        <translation>解除方法：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="420"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
         <source>Writes: %1</source>
         <translation>寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="421"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，即可解除發生中的警報。部分警報只能斷電重新上電解除；結果會顯示是哪一種。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="424"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="426"/>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="428"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
         <source>Reset alarm</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="427"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>要對機號 %1 送出警報重置指令嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="435"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
         <source>Sending the alarm reset…</source>
         <translation>正在送出警報重置…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="441"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
         <source>Alarm reset: %1</source>
         <translation>警報重置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="444"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>請關閉驅動器電源，等待 5 s 後再開啟。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="455"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (%2 筆記錄)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="457"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>the alarm and warning records</source>
         <translation>警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="459"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>Clear records</source>
         <translation>清除記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source>Erase %1 of machine %2?</source>
         <translation>要清除機號 %2 的%1嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="460"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
         <source> and </source>
         <translation> 與 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="461"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>記錄清除後無法復原。寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="463"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="470"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
         <source>Erasing the records…</source>
         <translation>正在清除記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="478"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1 (%2 筆記錄)；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="481"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
         <source>read back empty.</source>
         <translation>回讀為空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="482"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
         <source>NOT empty when read back.</source>
         <translation>回讀結果「不是」空的。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="484"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
     </message>
@@ -2028,6 +1996,27 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusLeaving</name>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="68"/>
+        <location filename="../ui/main/BusLeaving.cpp" line="88"/>
+        <source>quit</source>
+        <translation>結束</translation>
+    </message>
+    <message>
+        <location filename="../ui/main/BusLeaving.cpp" line="77"/>
+        <source>Unwritten changes</source>
+        <translation>未寫入的變更</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/main/BusLeaving.cpp" line="78"/>
+        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
+        <translation>
+            <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusListMenu</name>
     <message>
         <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
@@ -2482,22 +2471,22 @@ Drives: %5</source>
 <context>
     <name>opentop::BusScanner</name>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="223"/>
+        <location filename="../model/bus/BusScanner.cpp" line="152"/>
         <source>garbled replies twice (%1): two drives probably share machine number %2; check their address switches (%3)</source>
         <translation>兩次收到損壞的回應 (%1)：可能有兩台驅動器共用機號 %2；請檢查其位址開關 (%3)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="229"/>
+        <location filename="../model/bus/BusScanner.cpp" line="158"/>
         <source>answers, but none of the device profiles matches (%1)</source>
         <translation>有回應，但沒有符合的定義檔 (%1)</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="247"/>
+        <location filename="../model/bus/BusScanner.cpp" line="171"/>
         <source>answered, but its identification read got no reply (%1), also when asked %2 more times: add it by hand, or scan with a longer wait</source>
         <translation>有回應，但識別讀取沒有回覆 (%1)，再詢問 %2 次也一樣：請手動新增，或以較長的等待時間重新掃描</translation>
     </message>
     <message>
-        <location filename="../model/bus/BusScanner.cpp" line="333"/>
+        <location filename="../model/bus/BusScanner.cpp" line="243"/>
         <source>answered late at first (after the %1 ms wait); a longer wait makes scans of this bus reliable</source>
         <translation>第一次回應過慢 (超過 %1 ms 等待時間)；加長等待時間可使此匯流排的掃描更可靠</translation>
     </message>
@@ -3961,6 +3950,14 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::ConnectionViews</name>
+    <message>
+        <location filename="../ui/main/ConnectionViews.cpp" line="80"/>
+        <source>Communication groups: %1 (Bus › Communication groups)</source>
+        <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::DbuSimDevice</name>
     <message>
         <location filename="../sim/DbuSimDevice.cpp" line="340"/>
@@ -4518,41 +4515,41 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceParameters</name>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="91"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="92"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="93"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="94"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="95"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="96"/>
         <source>%1 is a command, not a setting; commands are sent one by one on request</source>
         <translation>%1 是指令而非設定；指令只會依要求逐一送出</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="249"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="260"/>
-        <location filename="../model/session/DeviceParameters.cpp" line="272"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="252"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="263"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="275"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="283"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n 筆寫入失敗：%1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceParameters.cpp" line="286"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
         <source>Written, but not verified on every drive it reached: %1</source>
         <translation>已寫入，但未能在所有收到的驅動器上確認：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/session/DeviceParameters.cpp" line="289"/>
+        <location filename="../model/session/DeviceParameters.cpp" line="292"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>已寫入並驗證 %n 個值</numerusform>
@@ -4562,40 +4559,30 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DeviceSession</name>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="82"/>
+        <location filename="../model/session/DeviceSession.cpp" line="83"/>
         <source>%1 has no parameter &quot;%2&quot;</source>
         <translation>%1 沒有參數 &quot;%2&quot;</translation>
     </message>
     <message>
         <location filename="../model/session/BlockReader.cpp" line="50"/>
-        <location filename="../model/session/DeviceSession.cpp" line="91"/>
+        <location filename="../model/session/DeviceSession.cpp" line="92"/>
         <source>%1 cannot be read (it is a write-only command)</source>
         <translation>%1 無法讀取 (為僅可寫入的指令)</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="139"/>
-        <source>cannot check the value: reading %1 failed: %2</source>
-        <translation>無法檢查此值：讀取 %1 失敗：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="156"/>
+        <location filename="../model/session/DeviceSession.cpp" line="137"/>
         <source>%1 is read-only</source>
         <translation>%1 為唯讀</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="162"/>
+        <location filename="../model/session/DeviceSession.cpp" line="143"/>
         <source>%1 is a %2 command; it is only sent when explicitly requested</source>
         <translation>%1 是 %2 指令；僅在明確要求時才會送出</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="192"/>
+        <location filename="../model/session/DeviceSession.cpp" line="173"/>
         <source>%1 cannot be checked: %2</source>
         <translation>無法檢查 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/DeviceSession.cpp" line="227"/>
-        <source>reading %1 failed: %2</source>
-        <translation>讀取 %1 失敗：%2</translation>
     </message>
     <message>
         <location filename="../model/session/BlockWriter.cpp" line="28"/>
@@ -4608,12 +4595,12 @@ Configuration changes written but not stored are discarded.</source>
         <translation>回應過短</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="291"/>
+        <location filename="../model/session/DeviceSession.cpp" line="254"/>
         <source>written, but reading it back failed: %1</source>
         <translation>已寫入，但回讀失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/session/DeviceSession.cpp" line="300"/>
+        <location filename="../model/session/DeviceSession.cpp" line="263"/>
         <source>verification failed: wrote %1, the device holds %2</source>
         <translation>驗證失敗：寫入 %1，裝置中為 %2</translation>
     </message>
@@ -4814,119 +4801,119 @@ Configuration changes written but not stored are discarded.</source>
     </message>
 </context>
 <context>
-    <name>opentop::DriveStatusPoller</name>
+    <name>opentop::DriveStatus</name>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="32"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="8"/>
         <source>not polled yet</source>
         <translation>尚未輪詢</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="34"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="10"/>
         <source>online</source>
         <translation>連線中</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="36"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="12"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>無回應 (連續 %n 次輪詢)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="38"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="13"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>通訊錯誤 (連續 %n 次)</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="44"/>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="56"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="19"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="31"/>
         <source>Status not known yet</source>
         <translation>狀態尚未得知</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="46"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="21"/>
         <source>No answer: %1</source>
         <translation>無回應：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="59"/>
-        <source>Alarm %1 %2</source>
-        <translation>警報 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="61"/>
-        <source>Alarm %1h (not in the alarm table)</source>
-        <translation>警報 %1h (不在警報表中)</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="63"/>
-        <source>Alarm active</source>
-        <translation>警報發生中</translation>
-    </message>
-    <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="49"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="24"/>
         <source>Communication error: %1</source>
         <translation>通訊錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="67"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="34"/>
+        <source>Alarm %1 %2</source>
+        <translation>警報 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="36"/>
+        <source>Alarm %1h (not in the alarm table)</source>
+        <translation>警報 %1h (不在警報表中)</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="38"/>
+        <source>Alarm active</source>
+        <translation>警報發生中</translation>
+    </message>
+    <message>
+        <location filename="../model/bus/DriveStatus.cpp" line="42"/>
         <source>Running</source>
         <translation>運轉中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="68"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CCW</source>
         <translation>CCW 運轉中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="69"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="43"/>
         <source>Running CW</source>
         <translation>CW 運轉中</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="71"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="45"/>
         <source>Stopped, no alarm</source>
         <translation>已停止，無警報</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="78"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="52"/>
         <source>grey</source>
         <translation>灰色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="80"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="54"/>
         <source>green</source>
         <translation>綠色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="82"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="56"/>
         <source>orange</source>
         <translation>橘色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="84"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="58"/>
         <source>sky blue</source>
         <translation>天藍色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="86"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="60"/>
         <source>red</source>
         <translation>紅色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="88"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="62"/>
         <source>purple</source>
         <translation>紫色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="90"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="64"/>
         <source>blue</source>
         <translation>藍色</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveStatusPoller.cpp" line="127"/>
+        <location filename="../model/bus/DriveStatus.cpp" line="101"/>
         <source>%1; %2</source>
         <translation>%1；%2</translation>
     </message>
@@ -5233,117 +5220,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolDriveRun</name>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="53"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="56"/>
         <source>identifying</source>
         <translation>識別中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="75"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="84"/>
         <source>no drive answers at machine number %1</source>
         <translation>機號 %1 沒有驅動器回應</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="76"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="85"/>
         <source>the drive at machine number %1 is not identified: %2</source>
         <translation>無法識別機號 %1 的驅動器：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="90"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="99"/>
         <source>a %1 drive, the recipe needs a %2 drive</source>
         <translation>為 %1 驅動器，配方需要 %2 驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="94"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="103"/>
         <source>firmware %1, the recipe allows %2</source>
         <translation>韌體為 %1，配方允許 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="95"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="104"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="101"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="110"/>
         <source>no profile for the family %1</source>
         <translation>沒有 %1 系列的定義檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="183"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="193"/>
         <source>cannot read whether the motor runs or an alarm is active: %1</source>
         <translation>無法讀取馬達是否運轉中或是否有警報發生：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="184"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="194"/>
         <source>no answer</source>
         <translation>無回應</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="191"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="201"/>
         <source>its motor was running before the test</source>
         <translation>測試前馬達已在運轉</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="192"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="202"/>
         <source>the motor is already running before the test (left by an interrupted run?); nothing was written: stop it first (STOP ALL, or at the drive)</source>
         <translation>測試前馬達已在運轉 (先前中斷的測試所遺留？)；未寫入任何資料：請先停止馬達 (全部停止，或在驅動器上操作)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="199"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
         <source>an alarm is active before the test (left by the last unit?); nothing was written: reset the alarm and test again</source>
         <translation>測試前已有警報發生 (上一台產品遺留？)；未寫入任何資料：請重置警報後重新測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="209"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="219"/>
         <source>writing the settings</source>
         <translation>正在寫入設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="251"/>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="258"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="224"/>
         <source>writing the settings: %1</source>
         <translation>寫入設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="233"/>
         <source>reading every setting back</source>
         <translation>正在回讀所有設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="281"/>
-        <source>%1 cannot be read back: %2</source>
-        <translation>%1 無法回讀：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="287"/>
-        <source>%1 does not keep its value: set to %2, reads %3</source>
-        <translation>%1 未保持其值：設定為 %2，讀取為 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="291"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="238"/>
         <source>verifying the settings: %1</source>
         <translation>驗證設定：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="305"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="252"/>
         <source>arming the communication-loss stop</source>
         <translation>啟用通訊中斷停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="319"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="266"/>
         <source>testing</source>
         <translation>測試中</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="323"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="270"/>
         <source>step %1 of %2: %3</source>
         <translation>步驟 %1/%2：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolDriveRun.cpp" line="386"/>
+        <location filename="../model/eol/EolDriveRun.cpp" line="335"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
@@ -6227,196 +6199,155 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="94"/>
+        <location filename="../cli/EolRunCommand.cpp" line="58"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="100"/>
+        <location filename="../cli/EolRunCommand.cpp" line="64"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="101"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>無使用者的工站上的測試者（預設：登入名稱）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="102"/>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="104"/>
+        <location filename="../cli/EolRunCommand.cpp" line="68"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="105"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="106"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="107"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技術員許可配方規則不允許的重新測試 (已合格的序號，或測試次數已用完)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="144"/>
+        <location filename="../cli/EolRunCommand.cpp" line="108"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="113"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="172"/>
+        <location filename="../cli/EolRunCommand.cpp" line="136"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允許 %3；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="174"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>any %1 variant</source>
         <translation>任何 %1 機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="183"/>
+        <location filename="../cli/EolRunCommand.cpp" line="147"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在機號 %2 沒有位置；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="197"/>
+        <location filename="../cli/EolRunCommand.cpp" line="161"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="212"/>
+        <location filename="../cli/EolRunCommand.cpp" line="176"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="243"/>
+        <location filename="../cli/EolRunCommand.cpp" line="207"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="247"/>
+        <location filename="../cli/EolRunCommand.cpp" line="211"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：單元 %1（開始於 %2）因工作站程序已結束而未完成，現已記錄為「中斷」。請確認其馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="252"/>
+        <location filename="../cli/EolRunCommand.cpp" line="216"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 筆結果尚未能送到結果資料庫</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="278"/>
+        <location filename="../cli/EolRunCommand.cpp" line="305"/>
         <source>error: %1; nothing was sent</source>
         <translation>錯誤：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="280"/>
+        <location filename="../cli/EolRunCommand.cpp" line="307"/>
         <source>a technician allows it with --retest</source>
         <translation>技術員可使用 --retest 許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="284"/>
+        <location filename="../cli/EolRunCommand.cpp" line="259"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；依 --retest 的許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="261"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="304"/>
+        <location filename="../cli/EolRunCommand.cpp" line="268"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="308"/>
+        <location filename="../cli/EolRunCommand.cpp" line="313"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驅動器未確認停止；未進行任何檢測</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="348"/>
-        <location filename="../cli/EolRunCommand.cpp" line="369"/>
-        <source>drive %1</source>
-        <translation>驅動器 %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>ok</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="374"/>
-        <source>FAIL</source>
-        <translation>不合格</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="392"/>
+        <location filename="../cli/EolRunCommand.cpp" line="286"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="423"/>
-        <source>rev. %1</source>
-        <translation>版次 %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="425"/>
-        <source>attempt %1</source>
-        <translation>第 %1 次測試</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="432"/>
-        <source>the result was NOT recorded: %1</source>
-        <translation>結果「未」記錄：%1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="434"/>
-        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
-        <translation>結果資料庫沒有回應：結果已保存在本工作站（%1），下次工作站程式連上資料庫時會送出</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRunCommand.cpp" line="439"/>
-        <source>WARNING: motor not confirmed stopped: %1</source>
-        <translation>警告：未確認馬達已停止：%1</translation>
     </message>
 </context>
 <context>
@@ -6466,6 +6397,68 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::EolRunOutput</name>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="85"/>
+        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <source>drive %1</source>
+        <translation>驅動器 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>ok</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <source>FAIL</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <source>rev. %1</source>
+        <translation>版次 %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <source>attempt %1</source>
+        <translation>第 %1 次測試</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <source>the result was NOT recorded: %1</source>
+        <translation>結果「未」記錄：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
+        <translation>結果資料庫沒有回應：結果已保存在本工作站（%1），下次工作站程式連上資料庫時會送出</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <source>WARNING: motor not confirmed stopped: %1</source>
+        <translation>警告：未確認馬達已停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::EolSettingsWriter</name>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="69"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="95"/>
+        <source>%1 cannot be read back: %2</source>
+        <translation>%1 無法回讀：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/EolSettingsWriter.cpp" line="101"/>
+        <source>%1 does not keep its value: set to %2, reads %3</source>
+        <translation>%1 未保持其值：設定為 %2，讀取為 %3</translation>
+    </message>
+</context>
+<context>
     <name>opentop::EolSpeedChart</name>
     <message>
         <location filename="../ui/eol/EolSpeedChart.cpp" line="20"/>
@@ -6492,259 +6485,93 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="141"/>
-        <source>no results database</source>
-        <translation>無結果資料庫</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
-        <source>opening the results database</source>
-        <translation>正在開啟結果資料庫</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="140"/>
-        <source>NOT REACHABLE (%1); trying again by itself</source>
-        <translation>無法連線（%1）；自動重試中</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="149"/>
+        <location filename="../model/station/EolStation.cpp" line="120"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="153"/>
+        <location filename="../model/station/EolStation.cpp" line="124"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="158"/>
-        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
-        <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="165"/>
-        <source>the results database is being opened; try again in a moment</source>
-        <translation>正在開啟結果資料庫；請稍後再試</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="167"/>
-        <source>the results database is not open; nothing is tested unless it is recorded</source>
-        <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="169"/>
-        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
-        <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="180"/>
+        <location filename="../model/station/EolStation.cpp" line="138"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units：序號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="184"/>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="142"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="188"/>
+        <location filename="../model/station/EolStation.cpp" line="146"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驅動器確認安全後，單元 %1 會立即開始</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="192"/>
+        <location filename="../model/station/EolStation.cpp" line="151"/>
         <source>no serial number</source>
         <translation>無序號</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="221"/>
-        <source>a drive of the station is not safe: %1</source>
-        <translation>工作站有驅動器不安全：%1</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="256"/>
+        <location filename="../model/station/EolStation.cpp" line="182"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>序號 %1 重新測試,由 %2 核准:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="292"/>
+        <location filename="../model/station/EolStation.cpp" line="219"/>
         <source>no unit was started yet</source>
         <translation>尚未開始任何產品的測試</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="304"/>
-        <source>cancelled before it started</source>
-        <translation>開始前已取消</translation>
     </message>
 </context>
 <context>
     <name>opentop::EolStepRunner</name>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="40"/>
-        <source>allowed %1–%2 %3</source>
-        <translation>允許 %1–%2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="42"/>
-        <source>allowed at most %1 %2</source>
-        <translation>最多允許 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="44"/>
-        <source>allowed at least %1 %2</source>
-        <translation>至少需 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="92"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="118"/>
         <source>step %1 (%2)</source>
         <translation>步驟 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="131"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="124"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="148"/>
         <source>the drive&apos;s session ended</source>
         <translation>驅動器的連線階段已結束</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="204"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="224"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="236"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="428"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="449"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="475"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="526"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="197"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="215"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="225"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="216"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="209"/>
         <source>%1: the drive has no communication priority</source>
         <translation>%1：驅動器未設為通訊優先</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="266"/>
-        <source>%1: the drive stopped answering: %2</source>
-        <translation>%1：驅動器停止回應：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="274"/>
-        <source>%1: the drive raised an alarm while running</source>
-        <translation>%1：驅動器在運轉中發生警報</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="297"/>
-        <source>%1: %2 %3</source>
-        <translation>%1：%2 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="316"/>
-        <source>%1: the drive has no speed to wait for</source>
-        <translation>%1：驅動器沒有可等待的速度</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
-        <source>time to reach speed</source>
-        <translation>到達速度時間</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="348"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="353"/>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="354"/>
-        <source>unknown</source>
-        <translation>未知</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="355"/>
-        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
-        <translation>%1：%5 s 內未達到 %2 %3 ±%4 %3 (最後讀取值 %6 %3)</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="356"/>
-        <source>its target</source>
-        <translation>其目標值</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="413"/>
-        <source>%1 could not be read</source>
-        <translation>無法讀取 %1</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="423"/>
-        <source>%1 %2 %3, %4</source>
-        <translation>%1 %2 %3，%4</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="441"/>
-        <source>%1: the drive reports no alarms</source>
-        <translation>%1：此驅動器沒有可讀取的警報狀態</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="454"/>
-        <source>alarms raised</source>
-        <translation>發生的警報</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="457"/>
-        <source>%1: the drive has an alarm</source>
-        <translation>%1：驅動器有警報</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="472"/>
-        <source>time to stop</source>
-        <translation>停止所需時間</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="479"/>
-        <source>%1: stopped after %2 s, allowed at most %3 s</source>
-        <translation>%1：%2 s 後停止，最多允許 %3 s</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="517"/>
-        <source>%1: nothing to read</source>
-        <translation>%1：無可讀取的項目</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="534"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="537"/>
-        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
-        <translation>%1：%2 讀取為 &quot;%3&quot;，預期為 &quot;%4&quot;</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="548"/>
-        <source>%1: %2 reads %3 %4, %5</source>
-        <translation>%1：%2 讀取為 %3 %4，%5</translation>
-    </message>
-    <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="570"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="256"/>
         <source>the stop command failed: %1</source>
         <translation>停止指令失敗：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="585"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="269"/>
         <source>stopped after %1 s</source>
         <translation>%1 s 後停止</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="586"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="270"/>
         <source>not confirmed stopped: %1</source>
         <translation>未確認停止：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="608"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="326"/>
         <source>communication priority could not be given back: %1</source>
         <translation>無法恢復原本的控制優先權：%1</translation>
     </message>
     <message>
-        <location filename="../model/eol/EolStepRunner.cpp" line="648"/>
+        <location filename="../model/eol/EolStepRunner.cpp" line="157"/>
         <source>the steps ended with the motor running</source>
         <translation>步驟結束時馬達仍在運轉</translation>
     </message>
@@ -7698,6 +7525,90 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::GoldenRecipeSource</name>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="39"/>
+        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>由 %1 建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="55"/>
+        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
+        <translation>機號 %1 不是匯流排上已知的驅動器；請先掃描匯流排</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Reading the golden unit&apos;s settings…</source>
+        <translation>正在讀取標準樣品的設定…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="64"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="73"/>
+        <source>machine number %1 is not on the bus</source>
+        <translation>機號 %1 不在匯流排上</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="86"/>
+        <source>cancelled: no recipe was made</source>
+        <translation>已取消：未建立配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>New recipe</source>
+        <translation>新配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="98"/>
+        <source>Product name:</source>
+        <translation>產品名稱：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="103"/>
+        <source>Revision:</source>
+        <translation>版次：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="111"/>
+        <source>Golden unit&apos;s backup file</source>
+        <translation>標準樣品的備份檔</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="112"/>
+        <source>Backups (*.json)</source>
+        <translation>備份檔 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="124"/>
+        <source>No drives on the bus: connect and scan first.</source>
+        <translation>匯流排上沒有驅動器：請先連線並掃描。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="132"/>
+        <source>New recipe from drives</source>
+        <translation>從驅動器新建配方</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="133"/>
+        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
+        <translation>標準樣品驅動器的機號 (已找到：%1)：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="143"/>
+        <source>&quot;%1&quot; is not a machine number (1–247)</source>
+        <translation>&quot;%1&quot; 不是機號 (1–247)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/GoldenRecipeSource.cpp" line="152"/>
+        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
+        <translation>由匯流排上的驅動器建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::GroupCheck</name>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="62"/>
@@ -8423,6 +8334,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
     </message>
 </context>
 <context>
+    <name>opentop::LimitCheck</name>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="35"/>
+        <source>%1 could not be read</source>
+        <translation>無法讀取 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="50"/>
+        <source>%1 %2 %3, %4</source>
+        <translation>%1 %2 %3，%4</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="73"/>
+        <source>allowed %1–%2 %3</source>
+        <translation>允許 %1–%2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="75"/>
+        <source>allowed at most %1 %2</source>
+        <translation>最多允許 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/LimitCheck.cpp" line="77"/>
+        <source>allowed at least %1 %2</source>
+        <translation>至少需 %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>opentop::LineFormat</name>
     <message>
         <location filename="../transport/LineFormat.cpp" line="37"/>
@@ -8699,33 +8638,33 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::MainWindow</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="55"/>
+        <location filename="../ui/main/MainWindow.cpp" line="58"/>
         <source>OpenTOP</source>
         <translation>OpenTOP</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="141"/>
+        <location filename="../ui/main/MainWindow.cpp" line="127"/>
         <source>connect elsewhere</source>
         <translation>連線至其他匯流排</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="164"/>
+        <location filename="../ui/main/MainWindow.cpp" line="141"/>
         <source>Connecting to %1… (still connected to %2)</source>
         <translation>正在連線至 %1… (仍連線於 %2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="203"/>
+        <location filename="../ui/main/MainWindow.cpp" line="158"/>
         <source>Connected: %1 (the new connection failed: %2)</source>
         <translation>已連線：%1 (新連線失敗：%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="206"/>
-        <location filename="../ui/main/MainWindow.cpp" line="220"/>
+        <location filename="../ui/main/MainWindow.cpp" line="161"/>
+        <location filename="../ui/main/MainWindow.cpp" line="175"/>
         <source>Cannot connect</source>
         <translation>無法連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="207"/>
+        <location filename="../ui/main/MainWindow.cpp" line="162"/>
         <source>%1
 
 Still connected to %2; nothing was changed.</source>
@@ -8734,80 +8673,70 @@ Still connected to %2; nothing was changed.</source>
 仍連線於 %2；未做任何變更。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="210"/>
-        <location filename="../ui/main/MainWindow.cpp" line="342"/>
+        <location filename="../ui/main/MainWindow.cpp" line="165"/>
+        <location filename="../ui/main/MainWindow.cpp" line="242"/>
         <source>Not connected: %1</source>
         <translation>未連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="281"/>
-        <source>Communication groups: %1 (Bus › Communication groups)</source>
-        <translation>通訊群組：%1 (匯流排 › 通訊群組)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main/MainWindow.cpp" line="312"/>
-        <location filename="../ui/main/MainWindow.cpp" line="314"/>
+        <location filename="../ui/main/MainWindow.cpp" line="217"/>
+        <location filename="../ui/main/MainWindow.cpp" line="219"/>
         <source>Connection lost: %1</source>
         <translation>連線中斷：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="319"/>
+        <location filename="../ui/main/MainWindow.cpp" line="224"/>
         <source>OpenTOP — SIMULATED BUS (no hardware) — %1</source>
         <translation>OpenTOP — 模擬匯流排 (無實體硬體) — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="320"/>
+        <location filename="../ui/main/MainWindow.cpp" line="225"/>
         <source>OpenTOP — %1</source>
         <translation>OpenTOP — %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="321"/>
+        <location filename="../ui/main/MainWindow.cpp" line="226"/>
         <source>Connecting to %1…</source>
         <translation>正在連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="341"/>
+        <location filename="../ui/main/MainWindow.cpp" line="241"/>
         <source>Connected: %1</source>
         <translation>已連線：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="348"/>
+        <location filename="../ui/main/MainWindow.cpp" line="248"/>
         <source>Connected: %1 (simulated, no hardware)</source>
         <translation>已連線：%1 (模擬，無實體硬體)</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="376"/>
+        <location filename="../ui/main/MainWindow.cpp" line="276"/>
         <source>The drive does not report its variant; %1 is the configured one.</source>
         <translation>此驅動器不回報機型；%1 為設定的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="406"/>
-        <location filename="../ui/main/MainWindow.cpp" line="416"/>
+        <location filename="../ui/main/MainWindow.cpp" line="293"/>
+        <location filename="../ui/main/MainWindow.cpp" line="303"/>
         <source>disconnect</source>
         <translation>中斷連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="413"/>
+        <location filename="../ui/main/MainWindow.cpp" line="300"/>
         <source>Not connected (disconnected)</source>
         <translation>未連線 (已中斷連線)</translation>
     </message>
+</context>
+<context>
+    <name>opentop::MissingValues</name>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="429"/>
-        <location filename="../ui/main/MainWindow.cpp" line="454"/>
-        <source>quit</source>
-        <translation>結束</translation>
+        <location filename="../model/session/MissingValues.cpp" line="18"/>
+        <source>cannot check the value: reading %1 failed: %2</source>
+        <translation>無法檢查此值：讀取 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main/MainWindow.cpp" line="440"/>
-        <source>Unwritten changes</source>
-        <translation>未寫入的變更</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/main/MainWindow.cpp" line="441"/>
-        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
-        <translation>
-            <numerusform>有 %n 項變更尚未寫入驅動器。要結束並捨棄這些變更嗎？</numerusform>
-        </translation>
+        <location filename="../model/session/MissingValues.cpp" line="41"/>
+        <source>reading %1 failed: %2</source>
+        <translation>讀取 %1 失敗：%2</translation>
     </message>
 </context>
 <context>
@@ -9241,17 +9170,17 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>各驅動器的單位不同 (%1)；請逐台寫入。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="234"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驅動器 %1 (%2) 不允許：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="241"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>驅動器 %1 的通訊群組不允許：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="246"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
         <source>None of the selected drives is identified.</source>
         <translation>所選驅動器均未識別。</translation>
     </message>
@@ -9289,56 +9218,56 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
         <translation>設定(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="345"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>將 %1 寫入機號 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="347"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="352"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在將 %1 寫入 %n 台驅動器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已於 %n 台驅動器中的 %1 台寫入並驗證。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="375"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
         <source>writing…</source>
         <translation>寫入中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
         <source>Written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written, not verified: %1</source>
         <translation>已寫入，未確認：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已寫入，未驗證 (無法回讀)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="396"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
@@ -10428,72 +10357,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="61"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="68"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="62"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="90"/>
-        <source>Scan or type the serial number, then Enter</source>
-        <translation>掃描或輸入序號後按 Enter</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="91"/>
-        <source>Cancel unit (Esc)</source>
-        <translation>取消此產品 (Esc)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="116"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Time</source>
-        <translation>時間</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Serial</source>
-        <translation>序號</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Verdict</source>
-        <translation>判定</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="123"/>
-        <source>Reason</source>
-        <translation>原因</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="164"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="226"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="227"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="199"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10502,169 +10401,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>open another recipe</source>
         <translation>開啟其他配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="259"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="265"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="231"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="260"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="272"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="276"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="277"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="311"/>
-        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
-        <translation>序號 %1 未被接受：單元 %2 正在檢測中。請在其判定結果顯示後再掃描一次。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
-        <source>another</source>
-        <translation>另一個單元</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="327"/>
-        <source>Per-unit value</source>
-        <translation>單台數值</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="328"/>
-        <source>Drive %1: %2 (%3–%4 %5)</source>
-        <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="347"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>單元 %1：先使工作站的驅動器進入安全狀態…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="481"/>
-        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
-        <translation>正在使配方的驅動器進入安全狀態：逐一讀取、停止仍在運轉者、將控制權交還其輸入端子…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="364"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="365"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="366"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="371"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="292"/>
         <source>Unit %1 — attempt %2</source>
         <translation>產品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="395"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="408"/>
-        <source>%1, NOT RECORDED</source>
-        <translation>%1，未記錄</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="410"/>
-        <source>%1 (kept on this station)</source>
-        <translation>%1（保存在本工作站）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="449"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="468"/>
-        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
-        <translation>
-            <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="472"/>
-        <source>it does not answer</source>
-        <translation>資料庫沒有回應</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="475"/>
-        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
-        <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="190"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="372"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="393"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="450"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="312"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="428"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="401"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="402"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10674,39 +10521,87 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::ProfileCrossCheck</name>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="49"/>
+        <source>%1: storeWith &quot;%2&quot; is not a command parameter</source>
+        <translation>%1：storeWith &quot;%2&quot; 不是指令參數</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="52"/>
+        <source>%1: the default is not among its allowed values</source>
+        <translation>%1：預設值不在允許值之內</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="56"/>
+        <source>%1: bit field &quot;%2&quot;: function &quot;%3&quot; is not a readable parameter</source>
+        <translation>%1：位元欄位 &quot;%2&quot;：function &quot;%3&quot; 不是可讀取的參數</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="63"/>
+        <source>%1: condition on unknown parameter &quot;%2&quot;</source>
+        <translation>%1：條件引用了未知參數 &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="65"/>
+        <source>%1: the default is not allowed when %2</source>
+        <translation>%1：當 %2 時不允許此預設值</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="75"/>
+        <source>%1 runs past address 0xFFFF</source>
+        <translation>%1 超出位址 0xFFFF</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="78"/>
+        <source>%1 overlaps &quot;%2&quot; at 0x%3 (%4 registers)</source>
+        <translation>%1 與 &quot;%2&quot; 在 0x%3 重疊 (%4 個暫存器)</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="107"/>
+        <source>identify: &quot;%1&quot; must be a parameter inside the identify read</source>
+        <translation>identify：&quot;%1&quot; 必須是 identify 讀取範圍內的參數</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ProfileCrossCheck.cpp" line="110"/>
+        <source>identify.nameMatch is not a valid regular expression</source>
+        <translation>identify.nameMatch 不是有效的正規表示式</translation>
+    </message>
+</context>
+<context>
     <name>opentop::ProfileLoader</name>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="429"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="345"/>
         <source>not valid JSON at offset %1: %2</source>
         <translation>位移 %1 處不是有效的 JSON：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="433"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="349"/>
         <source>the top level must be a JSON object</source>
         <translation>最上層必須是 JSON 物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="444"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="360"/>
         <source>&quot;parameters&quot; is empty</source>
         <translation>&quot;parameters&quot; 為空</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="455"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="371"/>
         <source>must be an object</source>
         <translation>必須是物件</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="457"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="373"/>
         <source>name repeated</source>
         <translation>名稱重複</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="468"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="384"/>
         <source>texts: {setting:…} names no parameter (%1)</source>
         <translation>texts：{setting:…} 所指的參數不存在 (%1)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ProfileLoader.cpp" line="477"/>
+        <location filename="../model/profile/ProfileLoader.cpp" line="393"/>
         <source>%1: cannot open: %2</source>
         <translation>%1：無法開啟：%2</translation>
     </message>
@@ -11181,218 +11076,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="40"/>
         <source>Recipe editor</source>
         <translation>配方編輯器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="68"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
         <source>Revision:</source>
         <translation>版次：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="70"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
         <source>Product:</source>
         <translation>產品：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="71"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Description:</source>
         <translation>說明：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="72"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
         <source>New from drives on the bus…</source>
         <translation>從匯流排上的驅動器新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from backup file…</source>
         <translation>從備份檔新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>Open…</source>
         <translation>開啟…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="113"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Save</source>
         <translation>儲存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="114"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save as…</source>
         <translation>另存新檔…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>由標準樣品在匯流排上的驅動器或其備份檔建立配方，或開啟既有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
         <source>the recipe is empty</source>
         <translation>配方為空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通過檢查：可儲存並執行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 個問題：修正之前無法儲存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通過檢查 (%n 個問題)；未儲存任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已開啟 %1，但無法直接載入 (%2)。儲存時會檢查並重新簽署。</translation>
     </message>
     <message>
         <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
-        <source>New recipe from %1: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>由 %1 建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
-        <source>machine number %1 is not a known drive on the bus; scan the bus first</source>
-        <translation>機號 %1 不是匯流排上已知的驅動器；請先掃描匯流排</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Reading the golden unit&apos;s settings…</source>
-        <translation>正在讀取標準樣品的設定…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="347"/>
-        <source>Cancel</source>
-        <translation>取消</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="356"/>
-        <source>machine number %1 is not on the bus</source>
-        <translation>機號 %1 不在匯流排上</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="369"/>
-        <source>cancelled: no recipe was made</source>
-        <translation>已取消：未建立配方</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="381"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="382"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="396"/>
-        <source>New recipe</source>
-        <translation>新配方</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="391"/>
-        <source>Product name:</source>
-        <translation>產品名稱：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="404"/>
-        <source>Golden unit&apos;s backup file</source>
-        <translation>標準樣品的備份檔</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="405"/>
-        <source>Backups (*.json)</source>
-        <translation>備份檔 (*.json)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="417"/>
-        <source>No drives on the bus: connect and scan first.</source>
-        <translation>匯流排上沒有驅動器：請先連線並掃描。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="425"/>
-        <source>New recipe from drives</source>
-        <translation>從驅動器新建配方</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="426"/>
-        <source>Machine numbers of the golden unit&apos;s drives (found: %1):</source>
-        <translation>標準樣品驅動器的機號 (已找到：%1)：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="436"/>
-        <source>&quot;%1&quot; is not a machine number (1–247)</source>
-        <translation>&quot;%1&quot; 不是機號 (1–247)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="445"/>
-        <source>New recipe from the drives on the bus: check the settings and the test steps&apos; limits, then save it.</source>
-        <translation>由匯流排上的驅動器建立的新配方：請檢查設定與測試步驟的限值後儲存。</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="456"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
         <source>Save recipe</source>
         <translation>儲存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="458"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="463"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
         <source>Saved and signed: %1</source>
         <translation>已儲存並簽署：%1</translation>
     </message>
@@ -12350,6 +12168,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
     </message>
 </context>
 <context>
+    <name>opentop::RelayAutotune</name>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="65"/>
+        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
+        <translation>運轉速度必須大於 0 且小於測試的速度限值 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="72"/>
+        <source>the relay amplitude must be 0–50 % of full output</source>
+        <translation>繼電器振幅必須為最大輸出的 0–50 %</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="75"/>
+        <source>Open loop: finding the output for %1 %2</source>
+        <translation>開迴路：正在尋找 %1 %2 所需的輸出</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="148"/>
+        <source>the motor did not turn at %1 % output</source>
+        <translation>輸出 %1 % 時馬達未轉動</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="180"/>
+        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
+        <translation>運轉速度需要 %1 % 的輸出：上下沒有 ±%2 % 的裕度</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="185"/>
+        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
+        <translation>正在 %1 %2 附近進行繼電器測試 (輸出 %3 % ± %4 %)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="224"/>
+        <source>no steady oscillation within %1 s: %2</source>
+        <translation>%1 s 內未出現穩定振盪：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="226"/>
+        <source>try a larger amplitude</source>
+        <translation>請嘗試加大振幅</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/RelayAutotune.cpp" line="259"/>
+        <source>the relay result was refused: %1</source>
+        <translation>繼電器測試結果不予採用：%1</translation>
+    </message>
+</context>
+<context>
     <name>opentop::RelayTuning</name>
     <message>
         <location filename="../model/tuning/RelayTuning.cpp" line="28"/>
@@ -13142,251 +13008,254 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
         <source>End-of-line results</source>
         <translation>終檢結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="67"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="68"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>First failure</source>
         <translation>首個不合格項目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
         <source>Export CSV…</source>
         <translation>匯出 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="86"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
         <source>Certificate PDF…</source>
         <translation>測試證書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="121"/>
-        <source>SQLite file or postgresql://user@host/database</source>
-        <translation>SQLite 檔或 postgresql://user@host/database</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="122"/>
-        <source>Open</source>
-        <translation>開啟</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="123"/>
-        <source>File…</source>
-        <translation>檔案…</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="130"/>
-        <source>any; * and ? as wildcards (SN-10*)</source>
-        <translation>全部；可用 * 與 ? 作萬用字元（SN-10*）</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="132"/>
         <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
-        <source>any</source>
-        <translation>不限</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
-        <source>Today</source>
-        <translation>今天</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="137"/>
-        <source>Last 24 hours</source>
-        <translation>最近 24 小時</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="138"/>
-        <source>Last 7 days</source>
-        <translation>最近 7 天</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="139"/>
-        <source>Last 30 days</source>
-        <translation>最近 30 天</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
-        <source>All</source>
-        <translation>全部</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="143"/>
-        <source>Any</source>
-        <translation>不限</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="147"/>
-        <source>Search</source>
-        <translation>搜尋</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="151"/>
-        <source>Serial:</source>
-        <translation>序號：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
-        <source>Recipe:</source>
-        <translation>配方：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="153"/>
-        <source>Station:</source>
-        <translation>工站：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
-        <source>Period:</source>
-        <translation>期間：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="155"/>
-        <source>Verdict:</source>
-        <translation>判定：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="163"/>
-        <source>Database:</source>
-        <translation>資料庫：</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="194"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 尚無結果資料庫：工站記錄第一台產品時會建立。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="200"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
         <source>Opening the results database %1…</source>
         <translation>正在開啟結果資料庫 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="212"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
         <source>Results database %1</source>
         <translation>結果資料庫 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="246"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
         <source>Searching…</source>
         <translation>正在搜尋…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="257"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="344"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="288"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="292"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>%n 台產品：合格 %1、不合格 %2、工站錯誤 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="320"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="372"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
         <source>no unit is selected</source>
         <translation>未選擇產品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="324"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
         <source>Reading unit %1…</source>
         <translation>正在讀取產品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="373"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在讀取該產品的記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="382"/>
-        <source>Open results database</source>
-        <translation>開啟結果資料庫</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="383"/>
-        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
-        <translation>SQLite 資料庫 (*.db *.sqlite);;所有檔案 (*)</translation>
-    </message>
-    <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>Export units as CSV</source>
         <translation>將產品匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="393"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已將 %n 台產品寫入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="409"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
         <source>Save certificate</source>
         <translation>儲存測試證書</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="410"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 檔 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="415"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
         <source>Certificate written to %1</source>
         <translation>測試證書已寫入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::ResultsFilterBar</name>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="21"/>
+        <source>SQLite file or postgresql://user@host/database</source>
+        <translation>SQLite 檔或 postgresql://user@host/database</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="22"/>
+        <source>Open</source>
+        <translation>開啟</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="23"/>
+        <source>File…</source>
+        <translation>檔案…</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="30"/>
+        <source>any; * and ? as wildcards (SN-10*)</source>
+        <translation>全部；可用 * 與 ? 作萬用字元（SN-10*）</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="32"/>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="34"/>
+        <source>any</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="36"/>
+        <source>Today</source>
+        <translation>今天</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="37"/>
+        <source>Last 24 hours</source>
+        <translation>最近 24 小時</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="38"/>
+        <source>Last 7 days</source>
+        <translation>最近 7 天</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="39"/>
+        <source>Last 30 days</source>
+        <translation>最近 30 天</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="40"/>
+        <source>All</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="43"/>
+        <source>Any</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="47"/>
+        <source>Search</source>
+        <translation>搜尋</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="51"/>
+        <source>Serial:</source>
+        <translation>序號：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="52"/>
+        <source>Recipe:</source>
+        <translation>配方：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="53"/>
+        <source>Station:</source>
+        <translation>工站：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="54"/>
+        <source>Period:</source>
+        <translation>期間：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="55"/>
+        <source>Verdict:</source>
+        <translation>判定：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="63"/>
+        <source>Database:</source>
+        <translation>資料庫：</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="105"/>
+        <source>Open results database</source>
+        <translation>開啟結果資料庫</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/ResultsFilterBar.cpp" line="106"/>
+        <source>SQLite databases (*.db *.sqlite);;All files (*)</source>
+        <translation>SQLite 資料庫 (*.db *.sqlite);;所有檔案 (*)</translation>
     </message>
 </context>
 <context>
@@ -14044,6 +13913,39 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialEntry</name>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="37"/>
+        <source>Scan or type the serial number, then Enter</source>
+        <translation>掃描或輸入序號後按 Enter</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="38"/>
+        <source>Cancel unit (Esc)</source>
+        <translation>取消此產品 (Esc)</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="95"/>
+        <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
+        <translation>序號 %1 未被接受：單元 %2 正在檢測中。請在其判定結果顯示後再掃描一次。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="97"/>
+        <source>another</source>
+        <translation>另一個單元</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="111"/>
+        <source>Per-unit value</source>
+        <translation>單台數值</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="112"/>
+        <source>Drive %1: %2 (%3–%4 %5)</source>
+        <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SerialLineFields</name>
     <message>
         <location filename="../ui/connection/SerialLineFields.cpp" line="29"/>
@@ -14137,152 +14039,110 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="88"/>
+        <location filename="../cli/SetCommand.cpp" line="42"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>依名稱寫入參數，經檢查、回讀並驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="98"/>
+        <location filename="../cli/SetCommand.cpp" line="52"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>依位址寫入暫存器：ADDR=VALUE (可重複指定；搭配 --fc 16 時可寫 VALUE,VALUE...)。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="99"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 寫入使用的功能碼：6 (預設) 或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="100"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="109"/>
+        <location filename="../cli/SetCommand.cpp" line="63"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>錯誤：用法：set ID NAME=VALUE... (例如 set 1 spno2.accel=2.5)，或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="121"/>
+        <location filename="../cli/SetCommand.cpp" line="75"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>錯誤：&quot;%1&quot; 不是 NAME=VALUE 格式</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="128"/>
-        <source>error: %1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
-        <translation>錯誤：%1 重複指定 (%2=%3 與 %4)；每項設定只能指定一次；未寫入任何資料</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="77"/>
-        <location filename="../cli/SetCommand.cpp" line="139"/>
-        <location filename="../cli/SetCommand.cpp" line="279"/>
+        <location filename="../cli/SetCommand.cpp" line="82"/>
+        <location filename="../cli/SetCommand.cpp" line="91"/>
+        <location filename="../cli/SetCommand.cpp" line="106"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="149"/>
-        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
-        <translation>%1 沒有參數 &quot;%2&quot;；請參閱 &quot;opentop-cli params --family %1&quot;</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="152"/>
-        <source>%1 is read-only</source>
-        <translation>%1 為唯讀</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="154"/>
-        <source>%1 is a %2 command; add --yes to send it</source>
-        <translation>%1 是 %2 指令；加上 --yes 才會送出</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="209"/>
-        <source>error: cannot read %1 to check the values; nothing written</source>
-        <translation>錯誤：無法讀取 %1 以檢查數值；未寫入任何資料</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
-        <location filename="../cli/SetCommand.cpp" line="262"/>
-        <location filename="../cli/SetCommand.cpp" line="273"/>
+        <location filename="../cli/SetCommand.cpp" line="104"/>
+        <location filename="../cli/SetCommand.cpp" line="114"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="95"/>
+        <location filename="../cli/SetCommand.cpp" line="49"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>確認會使馬達運轉、重置、清除、初始化或保存的指令，以及序列組態鎖定的設定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="250"/>
-        <source>Add --yes to set it.</source>
-        <translation>加上 --yes 才會設定。</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="79"/>
-        <location filename="../cli/SetCommand.cpp" line="280"/>
-        <source>nothing was written</source>
-        <translation>未寫入任何資料</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="308"/>
-        <source>not written (interrupted)</source>
-        <translation>未寫入 (已中斷)</translation>
-    </message>
-    <message>
-        <location filename="../cli/SetCommand.cpp" line="321"/>
+        <location filename="../cli/SetCommand.cpp" line="146"/>
         <source>next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="323"/>
+        <location filename="../cli/SetCommand.cpp" line="148"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (出廠通訊設定)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="367"/>
+        <location filename="../cli/SetCommand.cpp" line="193"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="373"/>
+        <location filename="../cli/SetCommand.cpp" line="199"/>
         <source>written, verified</source>
         <translation>已寫入，已驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="375"/>
+        <location filename="../cli/SetCommand.cpp" line="201"/>
         <source>written, not verified: %1</source>
         <translation>已寫入，未確認：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="376"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written (command, not readable)</source>
         <translation>已寫入 (指令，不可讀取)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="378"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；可用 &quot;get&quot; 回讀</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="389"/>
+        <location filename="../cli/SetCommand.cpp" line="215"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="396"/>
+        <location filename="../cli/SetCommand.cpp" line="222"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注意：驅動器自下次上電起使用 %1：請將驅動器斷電再上電，然後以新設定 (--baud、--parity) 連線</translation>
     </message>
@@ -14359,6 +14219,49 @@ This moves or stops a motor: add --yes to send it.</source>
         <location filename="../cli/SetRaw.cpp" line="193"/>
         <source>Also written to %1 (communication group); not read back: no parameter of the profile</source>
         <translation>也已寫入 %1 (通訊群組)；未回讀：不是定義檔中的參數</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::SettingsWrite</name>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="29"/>
+        <source>%1 is given twice (%2=%3 and %4); give each setting once; nothing written</source>
+        <translation>%1 重複指定 (%2=%3 與 %4)；每項設定只能指定一次；未寫入任何資料</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="76"/>
+        <source>%1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
+        <translation>%1 沒有參數 &quot;%2&quot;；請參閱 &quot;opentop-cli params --family %1&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="80"/>
+        <source>%1 is read-only</source>
+        <translation>%1 為唯讀</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="83"/>
+        <source>%1 is a %2 command; add --yes to send it</source>
+        <translation>%1 是 %2 指令；加上 --yes 才會送出</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="105"/>
+        <source>cannot read %1 to check the values; nothing written</source>
+        <translation>無法讀取 %1 以檢查數值；未寫入任何資料</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="157"/>
+        <source>Add --yes to set it.</source>
+        <translation>加上 --yes 才會設定。</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="229"/>
+        <source>interrupted as it was sent</source>
+        <translation>送出時已中斷</translation>
+    </message>
+    <message>
+        <location filename="../model/session/SettingsWrite.cpp" line="231"/>
+        <source>not written (interrupted)</source>
+        <translation>未寫入 (已中斷)</translation>
     </message>
 </context>
 <context>
@@ -15480,11 +15383,74 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StationNotice</name>
+    <message numerus="yes">
+        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <source>it does not answer</source>
+        <translation>資料庫沒有回應</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
+        <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
+        <translation>正在使配方的驅動器進入安全狀態：逐一讀取、停止仍在運轉者、將控制權交還其輸入端子…</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StationRecipe</name>
     <message>
         <location filename="../model/station/StationRecipe.cpp" line="68"/>
         <source>this recipe takes per-unit values from a CSV file: open it first</source>
         <translation>此配方的單台數值取自 CSV 檔：請先開啟該檔</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationResults</name>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="63"/>
+        <source>opening the results database</source>
+        <translation>正在開啟結果資料庫</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="65"/>
+        <source>NOT REACHABLE (%1); trying again by itself</source>
+        <translation>無法連線（%1）；自動重試中</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="66"/>
+        <source>no results database</source>
+        <translation>無結果資料庫</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="72"/>
+        <source>the result of unit %1 (%2) is not in the results database yet: nothing is tested until it is. The station tries again by itself (%3)</source>
+        <translation>產品 %1 的結果（%2）尚未寫入結果資料庫：寫入前不會進行任何測試。工作站會自動重試（%3）</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="77"/>
+        <source>the results database is being opened; try again in a moment</source>
+        <translation>正在開啟結果資料庫；請稍後再試</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="79"/>
+        <source>the results database is not open; nothing is tested unless it is recorded</source>
+        <translation>結果資料庫未開啟；無法記錄結果時不會進行測試</translation>
+    </message>
+    <message>
+        <location filename="../model/station/StationResults.cpp" line="80"/>
+        <source>the results database cannot be reached (%1); nothing is tested unless it is recorded. The station tries again by itself.</source>
+        <translation>無法連線至結果資料庫（%1）；無法記錄結果時不會進行測試。工作站會自動重試。</translation>
     </message>
 </context>
 <context>
@@ -15582,6 +15548,109 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
 </context>
 <context>
+    <name>opentop::StepMeasure</name>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="85"/>
+        <source>%1: the drive stopped answering: %2</source>
+        <translation>%1：驅動器停止回應：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="93"/>
+        <source>%1: the drive raised an alarm while running</source>
+        <translation>%1：驅動器在運轉中發生警報</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="113"/>
+        <source>%1: %2 %3</source>
+        <translation>%1：%2 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="132"/>
+        <source>%1: the drive has no speed to wait for</source>
+        <translation>%1：驅動器沒有可等待的速度</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="155"/>
+        <source>time to reach speed</source>
+        <translation>到達速度時間</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="159"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="167"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="168"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="169"/>
+        <source>%1: did not reach %2 %3 ±%4 %3 within %5 s (last read %6 %3)</source>
+        <translation>%1：%5 s 內未達到 %2 %3 ±%4 %3 (最後讀取值 %6 %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="170"/>
+        <source>its target</source>
+        <translation>其目標值</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="205"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="220"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="240"/>
+        <location filename="../model/eol/StepMeasure.cpp" line="301"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="215"/>
+        <source>%1: the drive reports no alarms</source>
+        <translation>%1：此驅動器沒有可讀取的警報狀態</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="225"/>
+        <source>alarms raised</source>
+        <translation>發生的警報</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="227"/>
+        <source>%1: the drive has an alarm</source>
+        <translation>%1：驅動器有警報</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="234"/>
+        <source>%1: nothing to read</source>
+        <translation>%1：無可讀取的項目</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="248"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="251"/>
+        <source>%1: %2 reads &quot;%3&quot;, expected &quot;%4&quot;</source>
+        <translation>%1：%2 讀取為 &quot;%3&quot;，預期為 &quot;%4&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="259"/>
+        <source>%1: %2 reads %3 %4, %5</source>
+        <translation>%1：%2 讀取為 %3 %4，%5</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="299"/>
+        <source>time to stop</source>
+        <translation>停止所需時間</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/StepMeasure.cpp" line="303"/>
+        <source>%1: stopped after %2 s, allowed at most %3 s</source>
+        <translation>%1：%2 s 後停止，最多允許 %3 s</translation>
+    </message>
+</context>
+<context>
     <name>opentop::StepMetrics</name>
     <message>
         <location filename="../model/tuning/StepMetrics.cpp" line="18"/>
@@ -15592,6 +15661,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <location filename="../model/tuning/StepMetrics.cpp" line="19"/>
         <source>too few samples after the step (%1)</source>
         <translation>步階後的取樣點過少 (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StepTest</name>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="39"/>
+        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
+        <translation>步階測試是從一個速度正轉到另一個速度：起始與目標速度必須不同，且須為 0 以上</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="47"/>
+        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
+        <translation>%1 %2 超過測試的速度限值 %3 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="55"/>
+        <source>Running to %1 %2</source>
+        <translation>正在運轉至 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/StepTest.cpp" line="88"/>
+        <source>Step to %1 %2</source>
+        <translation>步階至 %1 %2</translation>
     </message>
 </context>
 <context>
@@ -16301,85 +16393,85 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>物件 0x%1</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="52"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="26"/>
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="131"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未開啟</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="169"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <source>send failed</source>
         <translation>傳送失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="195"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="199"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="232"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之後又收到另一個回應：此回應可能是對先前請求的回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="267"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>驅動器自己的通訊格式需要序列埠；Modbus TCP 閘道器自行設定它的線路</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>無法把線路切換到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="356"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>回應來自從站 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="367"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
         <location filename="../transport/RtuBackend.cpp" line="158"/>
         <location filename="../transport/TcpBackend.cpp" line="89"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="372"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不符</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="379"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
         <location filename="../transport/RtuBackend.cpp" line="165"/>
         <location filename="../transport/TcpBackend.cpp" line="95"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="453"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
         <source> (connection closed)</source>
         <translation> (連線已關閉)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="475"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <source>stale bytes discarded before sending</source>
         <translation>傳送前已捨棄殘留位元組</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="559"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
         <source>late bytes discarded after an error</source>
         <translation>錯誤後已捨棄延遲到達的位元組</translation>
     </message>
@@ -17437,6 +17529,87 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::TuningDrive</name>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="50"/>
+        <source>a tuning test is already running</source>
+        <translation>已有調諧測試正在進行</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="88"/>
+        <source>Reading the drive&apos;s settings</source>
+        <translation>正在讀取驅動器設定</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="98"/>
+        <source>could not read the drive&apos;s settings: %1</source>
+        <translation>無法讀取驅動器設定：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="139"/>
+        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
+        <translation>驅動器不在閉迴路速度模式：請先將 %1 (%2) 設為 %3</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="141"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="146"/>
+        <source>Setting the communication-loss braking time to %1 s</source>
+        <translation>正在將通訊中斷停止時間設為 %1 s</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="201"/>
+        <source>the drive stopped answering: %1</source>
+        <translation>驅動器停止回應：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="221"/>
+        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
+        <translation>速度 %1 %2 超過測試限值 %3 %2：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="228"/>
+        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
+        <translation>電流 %1 A 超過測試限值 %2 A：已立即停止</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="234"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="271"/>
+        <source>Stopping the motor</source>
+        <translation>正在停止馬達</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="303"/>
+        <source>motor stopped (confirmed)</source>
+        <translation>馬達已停止 (已確認)</translation>
+    </message>
+    <message>
+        <location filename="../model/tuning/TuningDrive.cpp" line="304"/>
+        <source>the motor could not be confirmed stopped: check it</source>
+        <translation>無法確認馬達已停止：請檢查馬達</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningDriveSettings</name>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="53"/>
+        <source>Could not read the speed mode: %1</source>
+        <translation>無法讀取速度模式：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningDriveSettings.cpp" line="56"/>
+        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
+        <translation>驅動器不在閉迴路速度模式 (目前：%1)。請先在其設定頁面中選擇閉迴路模式。</translation>
+    </message>
+</context>
+<context>
     <name>opentop::TuningGains</name>
     <message>
         <location filename="../ui/tuning/TuningGains.cpp" line="43"/>
@@ -17600,125 +17773,105 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuningPage</name>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="43"/>
-        <source>STOP</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="55"/>
-        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
-        <translation>取消進行中的測試：停止馬達並確認已停止</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="71"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="53"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
         <source>Step test</source>
         <translation>步階測試</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="72"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="54"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Relay autotune</source>
         <translation>繼電器自動調諧</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="131"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="112"/>
         <source>Ready. Nothing moves until you confirm a test.</source>
         <translation>就緒。確認測試之前，馬達不會運轉。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="222"/>
-        <source>Could not read the speed mode: %1</source>
-        <translation>無法讀取速度模式：%1</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="225"/>
-        <source>The drive is not in a closed-loop speed mode (now: %1). Choose one on its settings page first.</source>
-        <translation>驅動器不在閉迴路速度模式 (目前：%1)。請先在其設定頁面中選擇閉迴路模式。</translation>
-    </message>
-    <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="248"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="191"/>
         <source>Limits: %1 %2, %3.</source>
         <translation>限值：%1 %2，%3。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>%1 A</source>
         <translation>%1 A</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="250"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="193"/>
         <source>no current limit</source>
         <translation>無電流限值</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="265"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="208"/>
         <source>The motor of %1 will run from %2 to %3 %4 in its present speed mode, for about %5 s, and then stop.</source>
         <translation>%1 的馬達將以目前的速度模式從 %2 運轉到 %3 %4，持續約 %5 s，然後停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="269"/>
-        <location filename="../ui/tuning/TuningPage.cpp" line="289"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="213"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="234"/>
         <source>Run</source>
         <translation>執行</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="285"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="229"/>
         <source>The motor of %1 will run in open loop (the speed loop off) around %2 %3, its output switching by ±%4 %, for up to %5 s, and then stop.</source>
         <translation>%1 的馬達將以開迴路 (速度迴路關閉) 在 %2 %3 附近運轉，輸出以 ±%4 % 切換，最長 %5 s，然後停止。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="307"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="252"/>
         <source>Stop command sent.</source>
         <translation>已送出停止指令。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="308"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="253"/>
         <source>Stop command failed: %1</source>
         <translation>停止指令失敗：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="318"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="263"/>
         <source>Stopping…</source>
         <translation>正在停止…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="332"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="277"/>
         <source>Run %1: %2 → %3 %4</source>
         <translation>測試 %1：%2 → %3 %4</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="296"/>
         <source>Step test done.</source>
         <translation>步階測試完成。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="367"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="297"/>
         <source>Step test ended: %1</source>
         <translation>步階測試已結束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="372"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="302"/>
         <source>The test was stopped</source>
         <translation>測試已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="403"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="333"/>
         <source>Autotune ended: %1</source>
         <translation>自動調諧已結束：%1</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="405"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="335"/>
         <source>The autotune was stopped</source>
         <translation>自動調諧已停止</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="415"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="344"/>
         <source>Predicted: %1 → %2 %3</source>
         <translation>預測：%1 → %2 %3</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningPage.cpp" line="423"/>
+        <location filename="../ui/tuning/TuningPage.cpp" line="347"/>
         <source>Autotune done: proposal %1. Accept writes it to the drive.</source>
         <translation>自動調諧完成：建議值 %1。接受後即寫入驅動器。</translation>
     </message>
@@ -17783,194 +17936,61 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
-    <name>opentop::TuningRunner</name>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="205"/>
-        <source>a tuning test is already running</source>
-        <translation>已有調諧測試正在進行</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="214"/>
-        <source>Reading the drive&apos;s settings</source>
-        <translation>正在讀取驅動器設定</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="223"/>
-        <source>could not read the drive&apos;s settings: %1</source>
-        <translation>無法讀取驅動器設定：%1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="250"/>
-        <source>the drive is not in a closed-loop speed mode: set %1 (%2) to %3 first</source>
-        <translation>驅動器不在閉迴路速度模式：請先將 %1 (%2) 設為 %3</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="252"/>
-        <source> or </source>
-        <translation> 或 </translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="267"/>
-        <source>Setting the communication-loss braking time to %1 s</source>
-        <translation>正在將通訊中斷停止時間設為 %1 s</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="291"/>
-        <source>the drive stopped answering: %1</source>
-        <translation>驅動器停止回應：%1</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="316"/>
-        <source>speed %1 %2 beyond the test&apos;s limit %3 %2: stopped at once</source>
-        <translation>速度 %1 %2 超過測試限值 %3 %2：已立即停止</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="323"/>
-        <source>current %1 A beyond the test&apos;s limit %2 A: stopped at once</source>
-        <translation>電流 %1 A 超過測試限值 %2 A：已立即停止</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="329"/>
-        <source>cancelled</source>
-        <translation>已取消</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="391"/>
-        <source>Stopping the motor</source>
-        <translation>正在停止馬達</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="396"/>
-        <source>motor stopped (confirmed)</source>
-        <translation>馬達已停止 (已確認)</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="397"/>
-        <source>the motor could not be confirmed stopped: check it</source>
-        <translation>無法確認馬達已停止：請檢查馬達</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="435"/>
-        <source>a step test runs forward from one speed to another: from and to must differ and be 0 or more</source>
-        <translation>步階測試是從一個速度正轉到另一個速度：起始與目標速度必須不同，且須為 0 以上</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="442"/>
-        <source>%1 %2 is beyond the test&apos;s speed limit %3 %2</source>
-        <translation>%1 %2 超過測試的速度限值 %3 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="450"/>
-        <source>Running to %1 %2</source>
-        <translation>正在運轉至 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="486"/>
-        <source>Step to %1 %2</source>
-        <translation>步階至 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="513"/>
-        <source>the operating speed must be above 0 and below the test&apos;s speed limit %1 %2</source>
-        <translation>運轉速度必須大於 0 且小於測試的速度限值 %1 %2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="520"/>
-        <source>the relay amplitude must be 0–50 % of full output</source>
-        <translation>繼電器振幅必須為最大輸出的 0–50 %</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="523"/>
-        <source>Open loop: finding the output for %1 %2</source>
-        <translation>開迴路：正在尋找 %1 %2 所需的輸出</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="581"/>
-        <source>the motor did not turn at %1 % output</source>
-        <translation>輸出 %1 % 時馬達未轉動</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="617"/>
-        <source>the operating speed needs %1 % output: no room for ±%2 % around it</source>
-        <translation>運轉速度需要 %1 % 的輸出：上下沒有 ±%2 % 的裕度</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="622"/>
-        <source>Relay test around %1 %2 (output %3 % ± %4 %)</source>
-        <translation>正在 %1 %2 附近進行繼電器測試 (輸出 %3 % ± %4 %)</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="657"/>
-        <source>no steady oscillation within %1 s: %2</source>
-        <translation>%1 s 內未出現穩定振盪：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="659"/>
-        <source>try a larger amplitude</source>
-        <translation>請嘗試加大振幅</translation>
-    </message>
-    <message>
-        <location filename="../model/tuning/TuningRunner.cpp" line="695"/>
-        <source>the relay result was refused: %1</source>
-        <translation>繼電器測試結果不予採用：%1</translation>
-    </message>
-</context>
-<context>
     <name>opentop::TuningRunsView</name>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="37"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
         <source>Save CSV…</source>
         <translation>儲存 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="38"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="39"/>
         <source>Save PNG…</source>
         <translation>儲存 PNG…</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="43"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
         <source>Saves the selected run: its samples, gains and metrics</source>
         <translation>儲存選取的測試：其取樣資料、增益與指標</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="44"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
         <source>Saves the chart as it is shown</source>
         <translation>依目前的顯示儲存圖表</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="45"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="46"/>
         <source>solid: speed · dotted: command · dash-dot: current (right axis) · dashed: predicted speed</source>
         <translation>實線：速度 · 點線：指令 · 一點鏈線：電流 (右軸) · 虛線：預測速度</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="174"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="220"/>
         <source>no run to save</source>
         <translation>沒有可儲存的測試</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="187"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="191"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="233"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="237"/>
         <source>Save run as CSV</source>
         <translation>將測試儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="188"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="234"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="196"/>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="242"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Save chart as PNG</source>
         <translation>將圖表儲存為 PNG</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="197"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="243"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 圖片 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/TuningRunsView.cpp" line="199"/>
+        <location filename="../ui/tuning/TuningRunsView.cpp" line="245"/>
         <source>Could not write %1.</source>
         <translation>無法寫入 %1。</translation>
     </message>
@@ -17991,6 +18011,19 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/tuning/TuningSpec.cpp" line="61"/>
         <source>%1: the profile&apos;s tuning section needs periodMs ≥ 1, outputFullScale &gt; 0, openLoopMode and closedLoopModes with known feedback parameters</source>
         <translation>%1：定義檔的調諧區段需要 periodMs ≥ 1、outputFullScale &gt; 0、openLoopMode，以及回授參數已知的 closedLoopModes</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::TuningStatusRow</name>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="12"/>
+        <source>STOP</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/tuning/TuningStatusRow.cpp" line="17"/>
+        <source>Cancels the running test: the motor is stopped and the stop confirmed</source>
+        <translation>取消進行中的測試：停止馬達並確認已停止</translation>
     </message>
 </context>
 <context>
@@ -18032,6 +18065,39 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
 </context>
 <context>
+    <name>opentop::UnitLog</name>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Serial</source>
+        <translation>序號</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <source>Reason</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <source>%1, NOT RECORDED</source>
+        <translation>%1，未記錄</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（保存在本工作站）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::UnitRecordJson</name>
     <message>
         <location filename="../model/eol/UnitRecordJson.cpp" line="115"/>
@@ -18062,6 +18128,24 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/eol/UnitRecordJson.cpp" line="192"/>
         <source>not JSON: %1</source>
         <translation>不是 JSON：%1</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::UnitStartGate</name>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="45"/>
+        <source>cancelled before it started</source>
+        <translation>開始前已取消</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="80"/>
+        <source>not connected to a bus</source>
+        <translation>未連線至匯流排</translation>
+    </message>
+    <message>
+        <location filename="../model/station/UnitStartGate.cpp" line="85"/>
+        <source>a drive of the station is not safe: %1</source>
+        <translation>工作站有驅動器不安全：%1</translation>
     </message>
 </context>
 <context>
@@ -18201,104 +18285,106 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::ValueCodec</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="201"/>
-        <source>depends on %1, which is not known yet</source>
-        <translation>取決於尚未得知的 %1</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="203"/>
-        <source>text of up to %1 characters</source>
-        <translation>最多 %1 個字元的文字</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="177"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="213"/>
-        <source> or </source>
-        <translation> 或 </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="192"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="63"/>
         <source>%1: %2 is outside the recommended range %3; it is allowed and will be written</source>
         <translation>%1：%2 超出建議範圍 %3；此值仍允許，將會寫入</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="221"/>
-        <source>, or </source>
-        <translation>，或 </translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="222"/>
-        <source>any value</source>
-        <translation>任意值</translation>
-    </message>
-    <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="238"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="80"/>
         <source> (the variant is not known, so the value must suit %1; name the variant to use its own range)</source>
         <translation> (機型未知，因此值必須適用於 %1；指定機型即可使用其範圍)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="248"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="90"/>
         <source>%1: the allowed values depend on %2, which has not been read</source>
         <translation>%1：允許值取決於尚未讀取的 %2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="253"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="95"/>
         <source>%1: value out of the register&apos;s range; allowed: %2</source>
         <translation>%1：值超出暫存器範圍；允許：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="265"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="107"/>
         <source>%1: %2 is not allowed; allowed: %3</source>
         <translation>%1：不允許 %2；允許：%3</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="277"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="119"/>
         <source>%1: expected %2 registers, got %3</source>
         <translation>%1：預期 %2 個暫存器，收到 %3 個</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="315"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="149"/>
         <source>%1 is text, not a number</source>
         <translation>%1 是文字，不是數字</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="328"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="162"/>
         <source>%1: %2 is finer than the step of %3 %4; allowed: %5</source>
         <translation>%1：%2 比最小單位 %3 %4 更細；允許：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="361"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="195"/>
         <source>%1: at most %2 characters</source>
         <translation>%1：最多 %2 個字元</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="367"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="200"/>
         <source>%1: only printable ASCII characters are allowed</source>
         <translation>%1：只允許可列印的 ASCII 字元</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="379"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="210"/>
         <source>%1: no value given; allowed: %2</source>
         <translation>%1：未指定值；允許：%2</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="419"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="250"/>
         <source>%1: &quot;%2&quot; is only available when %3 is %4; allowed now: %5</source>
         <translation>%1：&quot;%2&quot; 僅在 %3 為 %4 時可用；目前允許：%5</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="432"/>
-        <location filename="../model/profile/ValueCodec.cpp" line="452"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="263"/>
+        <location filename="../model/profile/ValueCodec.cpp" line="283"/>
         <source>%1: &quot;%2&quot; is not a valid value; allowed: %3</source>
         <translation>%1：&quot;%2&quot; 不是有效值；允許：%3</translation>
     </message>
+</context>
+<context>
+    <name>opentop::ValueFormat</name>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="478"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="45"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="65"/>
+        <source>depends on %1, which is not known yet</source>
+        <translation>取決於尚未得知的 %1</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="67"/>
+        <source>text of up to %1 characters</source>
+        <translation>最多 %1 個字元的文字</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="73"/>
+        <source>, or </source>
+        <translation>，或 </translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="74"/>
+        <source>any value</source>
+        <translation>任意值</translation>
+    </message>
+    <message>
+        <location filename="../model/profile/ValueFormat.cpp" line="81"/>
         <source>(invalid)</source>
         <translation>(無效)</translation>
     </message>
     <message>
-        <location filename="../model/profile/ValueCodec.cpp" line="489"/>
+        <location filename="../model/profile/ValueFormat.cpp" line="92"/>
         <source>unknown code %1</source>
         <translation>未知代碼 %1</translation>
     </message>

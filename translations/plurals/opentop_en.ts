@@ -70,6 +70,17 @@
     </message>
 </context>
 <context>
+    <name>opentop::BusLeaving</name>
+    <message numerus="yes">
+        <location filename="../../ui/main/BusLeaving.cpp" line="78"/>
+        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
+        <translation>
+            <numerusform>%n edit has not been written to the drives. Quit and discard it?</numerusform>
+            <numerusform>%n edits have not been written to the drives. Quit and discard them?</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusPanel</name>
     <message numerus="yes">
         <location filename="../../ui/bus/BusPanel.cpp" line="271"/>
@@ -113,7 +124,7 @@
 <context>
     <name>opentop::DeviceParameters</name>
     <message numerus="yes">
-        <location filename="../../model/session/DeviceParameters.cpp" line="283"/>
+        <location filename="../../model/session/DeviceParameters.cpp" line="286"/>
         <source>%n write(s) failed: %1</source>
         <translation>
             <numerusform>%n write failed: %1</numerusform>
@@ -121,7 +132,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/session/DeviceParameters.cpp" line="289"/>
+        <location filename="../../model/session/DeviceParameters.cpp" line="292"/>
         <source>%n value(s) written and verified</source>
         <translation>
             <numerusform>%n value written and verified</numerusform>
@@ -130,9 +141,9 @@
     </message>
 </context>
 <context>
-    <name>opentop::DriveStatusPoller</name>
+    <name>opentop::DriveStatus</name>
     <message numerus="yes">
-        <location filename="../../model/bus/DriveStatusPoller.cpp" line="36"/>
+        <location filename="../../model/bus/DriveStatus.cpp" line="12"/>
         <source>no answer (%n poll(s) in a row)</source>
         <translation>
             <numerusform>no answer (%n poll in a row)</numerusform>
@@ -140,7 +151,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../model/bus/DriveStatusPoller.cpp" line="38"/>
+        <location filename="../../model/bus/DriveStatus.cpp" line="13"/>
         <source>communication error (%n in a row)</source>
         <translation>
             <numerusform>communication error (%n in a row)</numerusform>
@@ -298,17 +309,6 @@
     </message>
 </context>
 <context>
-    <name>opentop::MainWindow</name>
-    <message numerus="yes">
-        <location filename="../../ui/main/MainWindow.cpp" line="441"/>
-        <source>%n edit(s) have not been written to the drives. Quit and discard them?</source>
-        <translation>
-            <numerusform>%n edit has not been written to the drives. Quit and discard it?</numerusform>
-            <numerusform>%n edits have not been written to the drives. Quit and discard them?</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message numerus="yes">
         <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
@@ -319,7 +319,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="354"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>Writing %1 to %n drive…</numerusform>
@@ -327,7 +327,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="366"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>Written and verified on %1 of %n drive.</numerusform>
@@ -400,26 +400,18 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="270"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="244"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drives</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="482"/>
-        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
-        <translation>
-            <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
-            <numerusform>%n results kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
-        </translation>
-    </message>
 </context>
 <context>
     <name>opentop::RecipeEditor</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="256"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="255"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n problem: the recipe cannot be saved until it is fixed.</numerusform>
@@ -427,7 +419,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="268"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="267"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>the recipe does not pass check (%n problem); nothing was saved</numerusform>
@@ -487,7 +479,7 @@
 <context>
     <name>opentop::ResultsBrowser</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="306"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="236"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>%n unit: %1 passed, %2 failed, %3 station errors · %4</numerusform>
@@ -495,7 +487,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="398"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="317"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>%n unit written to %1</numerusform>
@@ -511,6 +503,17 @@
         <translation>
             <numerusform>SPno%1 initialized; %n value could not be read back</numerusform>
             <numerusform>SPno%1 initialized; %n values could not be read back</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>opentop::StationNotice</name>
+    <message numerus="yes">
+        <location filename="../../ui/eol/StationNotice.cpp" line="29"/>
+        <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
+        <translation>
+            <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
+            <numerusform>%n results kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
         </translation>
     </message>
 </context>
