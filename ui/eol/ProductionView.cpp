@@ -28,13 +28,6 @@ namespace opentop {
 
 namespace {
 
-QFont scaled(QFont font, double factor, bool bold = false)
-{
-    font.setPointSizeF(font.pointSizeF() * factor);
-    font.setBold(bold);
-    return font;
-}
-
 QTableWidget* table(const QStringList& headers, QWidget* parent)
 {
     auto* t = new QTableWidget(0, int(headers.size()), parent);
@@ -76,12 +69,12 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     m_verdict = new QLabel(this);
     m_verdict->setObjectName(QStringLiteral("verdictLabel"));
     m_verdict->setAlignment(Qt::AlignCenter);
-    m_verdict->setFont(scaled(font(), 5.0, true));
+    m_verdict->setFont(VerdictLook::scaled(font(), 5.0, true));
     m_verdict->setMinimumHeight(m_verdict->fontMetrics().height() + 16);
     m_reason = new QLabel(this);
     m_reason->setWordWrap(true);
     m_reason->setAlignment(Qt::AlignCenter);
-    m_reason->setFont(scaled(font(), 1.5));
+    m_reason->setFont(VerdictLook::scaled(font(), 1.5));
     m_reason->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     m_drives = table({tr("Drive"), tr("Now")}, this);
@@ -93,7 +86,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
 
     m_units = new UnitLog(this);
     m_counters = new StationFigures(m_station, this);
-    m_counters->setFont(scaled(font(), 1.3, true));
+    m_counters->setFont(VerdictLook::scaled(font(), 1.3, true));
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);

@@ -2,6 +2,7 @@
 
 #include "model/profile/ProfileRegistry.h"
 #include "model/station/EolStation.h"
+#include "ui/eol/VerdictLook.h"
 
 #include <QApplication>
 #include <QHBoxLayout>
@@ -13,17 +14,6 @@
 
 namespace opentop {
 
-namespace {
-
-QFont scaled(QFont font, double factor, bool bold = false)
-{
-    font.setPointSizeF(font.pointSizeF() * factor);
-    font.setBold(bold);
-    return font;
-}
-
-} // namespace
-
 SerialEntry::SerialEntry(EolStation* station, std::function<ModbusClient*()> client,
                          TrafficLog* traffic, QWidget* parent)
     : QWidget(parent)
@@ -33,10 +23,10 @@ SerialEntry::SerialEntry(EolStation* station, std::function<ModbusClient*()> cli
 {
     m_serial = new QLineEdit(this);
     m_serial->setObjectName(QStringLiteral("serialField"));
-    m_serial->setFont(scaled(font(), 2.2));
+    m_serial->setFont(VerdictLook::scaled(font(), 2.2));
     m_serial->setPlaceholderText(tr("Scan or type the serial number, then Enter"));
     m_cancel = new QPushButton(tr("Cancel unit (Esc)"), this);
-    m_cancel->setFont(scaled(font(), 1.4, true));
+    m_cancel->setFont(VerdictLook::scaled(font(), 1.4, true));
     m_cancel->setEnabled(false);
     auto* serialRow = new QHBoxLayout;
     serialRow->addWidget(m_serial, 1);
@@ -44,7 +34,7 @@ SerialEntry::SerialEntry(EolStation* station, std::function<ModbusClient*()> cli
     m_scanNote = new QLabel(this);
     m_scanNote->setObjectName(QStringLiteral("scanNote"));
     m_scanNote->setWordWrap(true);
-    m_scanNote->setFont(scaled(font(), 1.3, true));
+    m_scanNote->setFont(VerdictLook::scaled(font(), 1.3, true));
     m_scanNote->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; }"));
     m_scanNote->hide();
     auto* layout = new QVBoxLayout(this);

@@ -70,4 +70,11 @@ QString VerdictLook::reason(const UnitRecord& record, const QString& reason)
     return reason;
 }
 
+QFont VerdictLook::scaled(QFont font, double factor, bool bold)
+{
+    font.setPointSizeF(font.pointSizeF() * factor);
+    font.setBold(bold);
+    return font;
+}
+
 } // namespace opentop
