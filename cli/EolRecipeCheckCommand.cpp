@@ -35,17 +35,12 @@ QList<QCommandLineOption> EolRecipeCheckCommand::options() const
 
 int EolRecipeCheckCommand::run(CliContext& context, const QStringList& args)
 {
-    if (args.size() != 1) {
-        context.err() << tr("error: name one recipe file; usage: eol %1").arg(synopsis())
-                      << Qt::endl;
-        return ExitUsage;
-    }
-    const QString path = args.first();
     int code = ExitOk;
     const std::optional<EolSupport::LoadedRecipe> loaded =
-        EolSupport::loadRecipe(context, path, true, &code);
+        EolSupport::recipeArgument(context, args, synopsis(), true, &code);
     if (!loaded)
         return code;
+    const QString path = args.first();
     const Recipe& recipe = loaded->recipe;
     const ProfileRegistry& registry = ProfileRegistry::builtIn();
     QVector<RecipeProblem> problems = RecipeChecker(registry).check(recipe);

@@ -131,17 +131,12 @@ void EolRecipeShowCommand::printPosition(CliContext& context, const Recipe& reci
 
 int EolRecipeShowCommand::run(CliContext& context, const QStringList& args)
 {
-    if (args.size() != 1) {
-        context.err() << tr("error: name one recipe file; usage: eol %1").arg(synopsis())
-                      << Qt::endl;
-        return ExitUsage;
-    }
-    const QString path = args.first();
     int code = ExitOk;
     const std::optional<EolSupport::LoadedRecipe> loaded =
-        EolSupport::loadRecipe(context, path, false, &code);
+        EolSupport::recipeArgument(context, args, synopsis(), false, &code);
     if (!loaded)
         return code;
+    const QString path = args.first();
     const Recipe& recipe = loaded->recipe;
     if (context.json()) {
         // The recipe as its file holds it, with the labels the profiles give its parameters.

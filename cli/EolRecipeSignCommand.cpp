@@ -28,17 +28,12 @@ QString EolRecipeSignCommand::summary() const
 
 int EolRecipeSignCommand::run(CliContext& context, const QStringList& args)
 {
-    if (args.size() != 1) {
-        context.err() << tr("error: name one recipe file; usage: eol %1").arg(synopsis())
-                      << Qt::endl;
-        return ExitUsage;
-    }
-    const QString path = args.first();
     int code = ExitOk;
     const std::optional<EolSupport::LoadedRecipe> loaded =
-        EolSupport::loadRecipe(context, path, true, &code);
+        EolSupport::recipeArgument(context, args, synopsis(), true, &code);
     if (!loaded)
         return code;
+    const QString path = args.first();
     const QVector<RecipeProblem> problems =
         RecipeChecker(ProfileRegistry::builtIn()).check(loaded->recipe);
     if (!problems.isEmpty()) {

@@ -18,6 +18,18 @@
 namespace opentop {
 
 std::optional<EolSupport::LoadedRecipe>
+EolSupport::recipeArgument(CliContext& context, const QStringList& args, const QString& usage,
+                           bool allowUnsigned, int* exitCode)
+{
+    if (args.size() != 1) {
+        context.err() << tr("error: name one recipe file; usage: eol %1").arg(usage) << Qt::endl;
+        *exitCode = ExitUsage;
+        return std::nullopt;
+    }
+    return loadRecipe(context, args.first(), allowUnsigned, exitCode);
+}
+
+std::optional<EolSupport::LoadedRecipe>
 EolSupport::loadRecipe(CliContext& context, const QString& path, bool allowUnsigned, int* exitCode)
 {
     const QFileInfo info(path);

@@ -34,6 +34,11 @@ public:
     // is returned with signedOk false and nothing is printed (check and sign decide).
     static std::optional<LoadedRecipe> loadRecipe(CliContext& context, const QString& path,
                                                   bool allowUnsigned, int* exitCode);
+    // The one recipe file a `recipe` subcommand names (`usage`: its synopsis), loaded as
+    // loadRecipe() does; a wrong number of arguments is a usage error (*exitCode 2).
+    static std::optional<LoadedRecipe> recipeArgument(CliContext& context, const QStringList& args,
+                                                      const QString& usage, bool allowUnsigned,
+                                                      int* exitCode);
     // The refusal of a recipe changed by hand, with how to re-sign it.
     static QString unsignedText(const QString& path);
 

@@ -5394,39 +5394,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="39"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="54"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="66"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="61"/>
         <source>%1, serial %2</source>
         <translation>%1、シリアル %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="92"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="87"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="89"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 は無効です: %n 件の問題。このレシピでは実行できません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="97"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有効: %1 リビジョン %2: %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="100"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>、%1 の製品 %n 台をチェックしました</numerusform>
@@ -5737,52 +5732,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>  ステップ:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="135"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="168"/>
         <source>%1, revision %2</source>
         <translation>%1、リビジョン %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="176"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="171"/>
         <source>checksum %1</source>
         <translation>チェックサム %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>variants</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="189"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="184"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
@@ -5794,30 +5784,25 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>手で編集したレシピを承認します: チェックに合格した場合のみ新しいチェックサムを付けます</translation>
     </message>
-    <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="32"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="48"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>エラー: %1 はチェックに合格しません（%n 件の問題）。署名していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="56"/>
         <source>error: %1; not signed</source>
         <translation>エラー: %1。署名していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="73"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="68"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 は署名済みです (%2)。何も変更していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="71"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>%1 に署名しました: %2 リビジョン %3、%4</translation>
     </message>
@@ -6579,97 +6564,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="26"/>
+        <location filename="../cli/EolSupport.cpp" line="25"/>
+        <source>error: name one recipe file; usage: eol %1</source>
+        <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolSupport.cpp" line="38"/>
         <source>no such file</source>
         <translation>ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="28"/>
+        <location filename="../cli/EolSupport.cpp" line="40"/>
         <source>is a directory; name a recipe file</source>
         <translation>ディレクトリです。レシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="30"/>
+        <location filename="../cli/EolSupport.cpp" line="42"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>通常のファイルではありません（デバイス、FIFO、ソケット）。レシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="32"/>
+        <location filename="../cli/EolSupport.cpp" line="44"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>%1 MB を超えています（レシピファイルの上限）</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="36"/>
+        <location filename="../cli/EolSupport.cpp" line="48"/>
         <source>cannot be read: %1</source>
         <translation>読み込めません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="38"/>
-        <location filename="../cli/EolSupport.cpp" line="159"/>
+        <location filename="../cli/EolSupport.cpp" line="50"/>
+        <location filename="../cli/EolSupport.cpp" line="171"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="65"/>
-        <location filename="../cli/EolSupport.cpp" line="176"/>
+        <location filename="../cli/EolSupport.cpp" line="77"/>
+        <location filename="../cli/EolSupport.cpp" line="188"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="72"/>
+        <location filename="../cli/EolSupport.cpp" line="84"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="79"/>
+        <location filename="../cli/EolSupport.cpp" line="91"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 は OpenTOP が書き込んだ後に変更されています（チェックサム不一致）。そのため、どのステーションでも実行できません。&quot;opentop-cli eol recipe check %1&quot; でチェックし、正しければ &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="97"/>
+        <location filename="../cli/EolSupport.cpp" line="109"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="122"/>
+        <location filename="../cli/EolSupport.cpp" line="134"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>位置 %n 箇所</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="123"/>
+        <location filename="../cli/EolSupport.cpp" line="135"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 個の設定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="125"/>
+        <location filename="../cli/EolSupport.cpp" line="137"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>個別値 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="126"/>
+        <location filename="../cli/EolSupport.cpp" line="138"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n ステップ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="133"/>
+        <location filename="../cli/EolSupport.cpp" line="145"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>書き込むファイル（recipe create、results --csv、certificate）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="146"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="167"/>
+        <location filename="../cli/EolSupport.cpp" line="179"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>エラー: %1 に結果データベースがありません（まだ何も記録されていません）。--db URL で指定してください</translation>
     </message>
@@ -10357,42 +10347,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="61"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="54"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="62"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="55"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="60"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="164"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="199"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10401,117 +10391,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>open another recipe</source>
         <translation>別のレシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="231"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="278"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="280"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="292"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
         <source>Unit %1 — attempt %2</source>
         <translation>製品 %1 — %2 回目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="312"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="156"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="331"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -13915,32 +13905,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SerialEntry</name>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="37"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="27"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="38"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="95"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="85"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="97"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="87"/>
         <source>another</source>
         <translation>別のユニット</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="111"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="101"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="112"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>

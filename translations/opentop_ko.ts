@@ -5394,39 +5394,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="39"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="54"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="66"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="61"/>
         <source>%1, serial %2</source>
         <translation>%1, 시리얼 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="92"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="87"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="89"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1이(가) 올바르지 않습니다: 문제 %n건. 이 레시피로는 아무것도 실행할 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="97"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>유효: %1 개정 %2: %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="100"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>; %1의 제품 %n대 검사함</numerusform>
@@ -5737,52 +5732,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>  단계:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="135"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="168"/>
         <source>%1, revision %2</source>
         <translation>%1, 개정 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="176"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="171"/>
         <source>checksum %1</source>
         <translation>체크섬 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>position</source>
         <translation>위치</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>variants</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="189"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="184"/>
         <source>any</source>
         <translation>모두</translation>
     </message>
@@ -5794,30 +5784,25 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>손으로 편집한 레시피를 승인합니다: 검사를 통과할 때만 새 체크섬을 붙입니다</translation>
     </message>
-    <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="32"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="48"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>오류: %1이(가) 검사를 통과하지 못했습니다(문제 %n건). 서명하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="56"/>
         <source>error: %1; not signed</source>
         <translation>오류: %1; 서명하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="73"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="68"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1은(는) 이미 서명되어 있습니다(%2). 변경 사항 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="71"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>%1 서명함: %2 개정 %3, %4</translation>
     </message>
@@ -6579,97 +6564,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="26"/>
+        <location filename="../cli/EolSupport.cpp" line="25"/>
+        <source>error: name one recipe file; usage: eol %1</source>
+        <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolSupport.cpp" line="38"/>
         <source>no such file</source>
         <translation>파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="28"/>
+        <location filename="../cli/EolSupport.cpp" line="40"/>
         <source>is a directory; name a recipe file</source>
         <translation>디렉터리입니다. 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="30"/>
+        <location filename="../cli/EolSupport.cpp" line="42"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>일반 파일이 아닙니다(장치, FIFO 또는 소켓). 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="32"/>
+        <location filename="../cli/EolSupport.cpp" line="44"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>레시피 파일의 최대 크기 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="36"/>
+        <location filename="../cli/EolSupport.cpp" line="48"/>
         <source>cannot be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="38"/>
-        <location filename="../cli/EolSupport.cpp" line="159"/>
+        <location filename="../cli/EolSupport.cpp" line="50"/>
+        <location filename="../cli/EolSupport.cpp" line="171"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="65"/>
-        <location filename="../cli/EolSupport.cpp" line="176"/>
+        <location filename="../cli/EolSupport.cpp" line="77"/>
+        <location filename="../cli/EolSupport.cpp" line="188"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="72"/>
+        <location filename="../cli/EolSupport.cpp" line="84"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="79"/>
+        <location filename="../cli/EolSupport.cpp" line="91"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1이(가) OpenTOP에서 저장한 후 변경되었으므로(체크섬 불일치) 어느 스테이션에서도 실행하지 않습니다. &quot;opentop-cli eol recipe check %1&quot;로 검사하고, 올바르면 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="97"/>
+        <location filename="../cli/EolSupport.cpp" line="109"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="122"/>
+        <location filename="../cli/EolSupport.cpp" line="134"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>위치 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="123"/>
+        <location filename="../cli/EolSupport.cpp" line="135"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>설정 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="125"/>
+        <location filename="../cli/EolSupport.cpp" line="137"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>제품별 값 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="126"/>
+        <location filename="../cli/EolSupport.cpp" line="138"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>단계 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="133"/>
+        <location filename="../cli/EolSupport.cpp" line="145"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>저장할 파일(recipe create; results --csv; certificate).</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="146"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="167"/>
+        <location filename="../cli/EolSupport.cpp" line="179"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>오류: %1에 결과 데이터베이스가 없습니다(아직 기록된 것 없음). --db URL로 지정하십시오</translation>
     </message>
@@ -10357,42 +10347,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="61"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="54"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="62"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="55"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="60"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="164"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="199"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10401,117 +10391,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>open another recipe</source>
         <translation>다른 레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="231"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="278"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="280"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="292"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
         <source>Unit %1 — attempt %2</source>
         <translation>제품 %1 — %2회차</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="312"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="156"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="331"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -13915,32 +13905,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SerialEntry</name>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="37"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="27"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="38"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="95"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="85"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="97"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="87"/>
         <source>another</source>
         <translation>다른 유닛</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="111"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="101"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="112"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>

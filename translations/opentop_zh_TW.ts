@@ -5394,39 +5394,34 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="39"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="54"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="66"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="61"/>
         <source>%1, serial %2</source>
         <translation>%1，序號 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="92"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="87"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="89"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 無效：%n 個問題；不可使用此配方執行</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="97"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有效：%1 版次 %2：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="100"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>；已檢查 %1 的 %n 台產品</numerusform>
@@ -5737,52 +5732,47 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>  步驟：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="135"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
-    </message>
-    <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="168"/>
         <source>%1, revision %2</source>
         <translation>%1，版次 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="176"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="171"/>
         <source>checksum %1</source>
         <translation>檢查碼 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>variants</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="178"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="189"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="184"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
@@ -5794,30 +5784,25 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>接受手動編輯的配方：僅在通過檢查時產生新的檢查碼</translation>
     </message>
-    <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="32"/>
-        <source>error: name one recipe file; usage: eol %1</source>
-        <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="48"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>錯誤：%1 未通過檢查 (%n 個問題)；未簽署</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="56"/>
         <source>error: %1; not signed</source>
         <translation>錯誤：%1；未簽署</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="73"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="68"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 已簽署 (%2)；未做任何變更</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="71"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>已簽署 %1：%2 版次 %3，%4</translation>
     </message>
@@ -6579,97 +6564,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="26"/>
+        <location filename="../cli/EolSupport.cpp" line="25"/>
+        <source>error: name one recipe file; usage: eol %1</source>
+        <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolSupport.cpp" line="38"/>
         <source>no such file</source>
         <translation>檔案不存在</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="28"/>
+        <location filename="../cli/EolSupport.cpp" line="40"/>
         <source>is a directory; name a recipe file</source>
         <translation>是資料夾；請指定配方檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="30"/>
+        <location filename="../cli/EolSupport.cpp" line="42"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>不是一般檔案 (裝置、FIFO 或 socket)；請指定配方檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="32"/>
+        <location filename="../cli/EolSupport.cpp" line="44"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>大於配方檔上限 %1 MB</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="36"/>
+        <location filename="../cli/EolSupport.cpp" line="48"/>
         <source>cannot be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="38"/>
-        <location filename="../cli/EolSupport.cpp" line="159"/>
+        <location filename="../cli/EolSupport.cpp" line="50"/>
+        <location filename="../cli/EolSupport.cpp" line="171"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="65"/>
-        <location filename="../cli/EolSupport.cpp" line="176"/>
+        <location filename="../cli/EolSupport.cpp" line="77"/>
+        <location filename="../cli/EolSupport.cpp" line="188"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="72"/>
+        <location filename="../cli/EolSupport.cpp" line="84"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="79"/>
+        <location filename="../cli/EolSupport.cpp" line="91"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 在 OpenTOP 寫入後曾被修改 (檢查碼不符)，因此任何工站都不會執行。請以 &quot;opentop-cli eol recipe check %1&quot; 檢查，確認無誤後以 &quot;opentop-cli eol recipe sign %1&quot; 簽署</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="97"/>
+        <location filename="../cli/EolSupport.cpp" line="109"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="122"/>
+        <location filename="../cli/EolSupport.cpp" line="134"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>%n 個位置</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="123"/>
+        <location filename="../cli/EolSupport.cpp" line="135"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 項設定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="125"/>
+        <location filename="../cli/EolSupport.cpp" line="137"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>%n 個單台數值</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="126"/>
+        <location filename="../cli/EolSupport.cpp" line="138"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n 個步驟</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="133"/>
+        <location filename="../cli/EolSupport.cpp" line="145"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>要寫入的檔案 (recipe create；results --csv；certificate)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="146"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="167"/>
+        <location filename="../cli/EolSupport.cpp" line="179"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>錯誤：%1 沒有結果資料庫 (尚未記錄任何資料)；請以 --db URL 指定</translation>
     </message>
@@ -10357,42 +10347,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="61"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="54"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="62"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="55"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="67"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="60"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="87"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="164"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="198"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="199"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10401,117 +10391,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
         <source>open another recipe</source>
         <translation>開啟其他配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="223"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="231"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="232"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="248"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="249"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="251"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>單元 %1：先使工作站的驅動器進入安全狀態…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="278"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="280"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="292"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
         <source>Unit %1 — attempt %2</source>
         <translation>產品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="358"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="163"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="293"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="312"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="359"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="156"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="338"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="331"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="320"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="321"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -13915,32 +13905,32 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SerialEntry</name>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="37"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="27"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="38"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="95"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="85"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序號 %1 未被接受：單元 %2 正在檢測中。請在其判定結果顯示後再掃描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="97"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="87"/>
         <source>another</source>
         <translation>另一個單元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="111"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="101"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="112"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
