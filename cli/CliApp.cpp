@@ -30,10 +30,14 @@ QList<QCommandLineOption> globalOptions()
             "dbu400, 150=dbu400)."),
          tr("VARIANT")},
         {QStringLiteral("bus-drives"),
-         tr("The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write "
-            "or command, their communication group is read to name every drive it also "
-            "reaches."),
+         tr("The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives "
+            "the last scan of this connection found): before a write or command, their "
+            "communication group is read to name every drive it also reaches."),
          tr("LIST")},
+        {QStringLiteral("no-group-check"),
+         tr("Write or command a drive that can be a communication group parent although the "
+            "drives on the bus are not known (no --bus-drives and no scan of this connection): "
+            "drives in its group execute it too, unnamed.")},
         {{QStringLiteral("h"), QStringLiteral("help")},
          tr("Show this help, or a command's help after the command.")},
         {QStringLiteral("version"), tr("Show the version.")},
@@ -80,8 +84,10 @@ QString CliApp::helpText(const QString& program) const
                "  direction; off: the adapter), --rts-polarity high|low, --rts-delay US,\n"
                "  --low-latency on|off (default on). scan says what the driver accepted.\n"
                "Output: --json  --trace  --variant VARIANT  --lang CODE\n"
-               "Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication\n"
-               "group is checked before a write or command\n\n"
+               "Groups: before a write or command, the communication group of the drives on the\n"
+               "bus is read: --bus-drives LIST (or OPENTOP_BUS_DRIVES), else the drives the last\n"
+               "scan of this connection found (here or in the window); with neither, a write to a\n"
+               "drive that can be a group parent is refused unless --no-group-check\n\n"
                "Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file\n"
                "(nothing written), 4 verification mismatch or a drive that did not stop,\n"
                "5 eol run FAIL, 6 eol run station error (no verdict on the unit),\n"

@@ -126,24 +126,46 @@ bool CliContext::connectBus()
     return true;
 }
 
-std::optional<QVector<int>> CliContext::busDrives(QString* error)
+std::optional<BusDriveList> CliContext::busDrives(QString* error)
 {
     const QString option = QStringLiteral("bus-drives");
-    QString text = m_parser.isSet(option) ? m_parser.value(option)
-                                          : qEnvironmentVariable("OPENTOP_BUS_DRIVES");
-    if (text.trimmed().isEmpty()) {
-        if (!connectBus())
-            return QVector<int>();
-        return m_knownSlaves;
+    const bool given = m_parser.isSet(option);
+    const QString text =
+        given ? m_parser.value(option) : qEnvironmentVariable("OPENTOP_BUS_DRIVES");
+    BusDriveList list;
+    if (!text.trimmed().isEmpty()) {
+        QString parseError;
+        const auto ids = parseIds(text, &parseError);
+        if (!ids) {
+            if (error)
+                *error = tr("%1 \"%2\": %3")
+                             .arg(given ? QStringLiteral("--bus-drives")
+                                        : QStringLiteral("OPENTOP_BUS_DRIVES"),
+                                  text, parseError);
+            return std::nullopt;
+        }
+        list.source = given ? BusDriveList::Source::Option : BusDriveList::Source::Environment;
+        list.slaves = *ids;
+        return list;
     }
-    QString parseError;
-    const auto ids = parseIds(text, &parseError);
-    if (!ids && error)
-        *error = tr("%1 \"%2\": %3")
-                     .arg(m_parser.isSet(option) ? QStringLiteral("--bus-drives")
-                                                 : QStringLiteral("OPENTOP_BUS_DRIVES"),
-                          text, parseError);
-    return ids;
+    if (!connectBus())
+        return list;
+    if (m_settings.kind == ConnectionSettings::Kind::Simulated) {
+        list.source = BusDriveList::Source::Simulated;
+        list.slaves = m_knownSlaves;
+        return list;
+    }
+    // What the last scan of this connection found, here or in the window.
+    const QString key = BusMemory::key(m_settings);
+    const QVector<BusMemory::Drive> remembered = BusMemory::load(key);
+    if (remembered.isEmpty())
+        return list;
+    list.source = BusDriveList::Source::Remembered;
+    for (const BusMemory::Drive& d : remembered)
+        list.slaves << d.slave;
+    list.savedAt = BusMemory::savedAt(key);
+    list.place = BusMemory::placeText(m_settings);
+    return list;
 }
 
 QString CliContext::busKey(QString* error) const

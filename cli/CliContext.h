@@ -1,5 +1,6 @@
 #pragma once
 
+#include "cli/BusDriveList.h"
 #include "cli/ExitCode.h"
 #include "model/bus/BusGroups.h"
 #include "model/session/DeviceInfo.h"
@@ -48,9 +49,10 @@ public:
     // Machine numbers the connection already knows (a simulated bus's device list).
     QVector<int> knownSlaves() const { return m_knownSlaves; }
 
-    // The drives the user says are on the bus: --bus-drives LIST, else OPENTOP_BUS_DRIVES, else
-    // the simulated bus's list; empty when none is known; nullopt (with *error) when malformed.
-    std::optional<QVector<int>> busDrives(QString* error);
+    // The drives on the bus for the group check (BusDriveList: --bus-drives LIST, else
+    // OPENTOP_BUS_DRIVES, else the simulated bus's list, else the last scan's drives); nullopt
+    // (with *error) when the list given is malformed.
+    std::optional<BusDriveList> busDrives(QString* error);
 
     // The groups found before a write: --trace then shows who else a write to a parent reaches,
     // and a session's writes are validated by and read back from its children (GroupReach).

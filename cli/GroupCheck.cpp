@@ -13,6 +13,8 @@ namespace opentop {
 
 namespace {
 
+constexpr qint64 kStaleListS = 24 * 3600; // a day: a remembered list is then said every time
+
 QString tr(const char* text)
 {
     return QCoreApplication::translate("opentop::GroupCheck", text);
@@ -57,26 +59,39 @@ int GroupCheck::read(int target)
     DeviceSession* session = m_context.session(target, &error);
     if (!session || BusGroups::groupParameter(session->profile()).isEmpty())
         return ExitOk; // a family without groups: the write reaches the target only
-    const std::optional<QVector<int>> listed = m_context.busDrives(&error);
+    const std::optional<BusDriveList> listed = m_context.busDrives(&error);
     if (!listed) {
         m_context.err() << tr("error: %1").arg(error) << Qt::endl;
         return ExitUsage;
     }
     m_groups.addDrive(target);
     readGroup(m_context, session, &m_groups);
-    QVector<int> others;
-    for (int slave : *listed)
-        if (slave != target)
-            others << slave;
-    if (others.isEmpty()) {
-        m_context.err() << tr("note: the other drives on the bus are not known, so drives in "
-                              "communication group %1 (which also execute what is sent to %1) "
-                              "were not looked for; name them with --bus-drives LIST or "
-                              "OPENTOP_BUS_DRIVES")
+    if (listed->source == BusDriveList::Source::None) {
+        // Children never reply: without a list, the drives a write also reaches are unknown.
+        if (m_context.parser().isSet(QStringLiteral("no-group-check"))) {
+            m_context.err() << tr("note: --no-group-check: drives in communication group %1 "
+                                  "(which also execute what is sent to %1) were not looked for")
+                                   .arg(target)
+                            << Qt::endl;
+            return ExitOk;
+        }
+        m_context.err() << tr("error: the drives on this bus are not known, so drives in "
+                              "communication group %1 (which also execute what is sent to %1, "
+                              "without replying) cannot be named; nothing was sent")
                                .arg(target)
                         << Qt::endl;
-        return ExitOk;
+        m_context.err() << tr("scan the bus first (opentop-cli scan), name its drives with "
+                              "--bus-drives LIST, or add --no-group-check to send it without "
+                              "looking")
+                        << Qt::endl;
+        return ExitUsage;
     }
+    QVector<int> others;
+    for (int slave : listed->slaves)
+        if (slave != target)
+            others << slave;
+    if (others.isEmpty())
+        return ExitOk; // the only drive on the bus
     QVector<int> silent;
     for (int slave : others) {
         DeviceSession* other = m_context.session(slave, &error);
@@ -95,6 +110,15 @@ int GroupCheck::read(int target)
                         << Qt::endl;
     m_context.setGroups(m_groups);
     m_children = m_groups.childrenOf(target);
+    // Each remembered drive's group was read again just now; the list itself is said where it
+    // matters: when it names children, or when it is old enough that drives may have been added.
+    if (listed->source == BusDriveList::Source::Remembered &&
+        (!m_children.isEmpty() || !listed->savedAt.isValid() ||
+         listed->savedAt.secsTo(QDateTime::currentDateTimeUtc()) > kStaleListS))
+        m_context.err() << tr("note: the drives on the bus are %1, from %2; drives added since "
+                              "are not known until the next scan")
+                               .arg(BusGroups::listText(listed->slaves), listed->sourceText())
+                        << Qt::endl;
     return ExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include "cli/ScanProgress.h"
 #include "cli/TextTable.h"
 #include "model/bus/BusGroups.h"
+#include "model/bus/BusMemory.h"
 #include "model/bus/BusScanner.h"
 #include "model/bus/FixedLineHint.h"
 #include "model/profile/ProfileRegistry.h"
@@ -198,8 +199,17 @@ int ScanCommand::run(CliContext& context, const QStringList& args)
                       << Qt::endl;
         return ExitCommunication;
     }
+    // The drives found are this connection's from now on (shared with the window): a later
+    // write or command reads their communication groups to name every drive it reaches.
+    const QString key = BusMemory::key(context.settings());
+    BusMemory::update(key, range.from, range.to, BusMemory::present(devices));
     if (!context.json())
         context.out() << summaryLine(devices, elapsedMs) << Qt::endl;
+    context.err() << tr("note: remembered for %1: %2; set, run and restore read their "
+                        "communication groups before a write")
+                         .arg(BusMemory::placeText(context.settings()),
+                              BusMemory::listText(BusMemory::load(key)))
+                  << Qt::endl;
     warnDuplicates(context, devices);
     if (!tryFormats)
         ScanFormats::hint(context, range.from, range.to, devices);

@@ -216,8 +216,8 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="33"/>
-        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
-        <translation>バス上のドライバ（例: 1,3,5-7、既定: OPENTOP_BUS_DRIVES）。書込みやコマンドの前にこれらの通信グループを読み出し、同時に届くすべてのドライバを表示します。</translation>
+        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
+        <translation>バス上のドライバ。例: 1,3,5-7（既定: OPENTOP_BUS_DRIVES、なければこの接続の前回のスキャンで見つかったドライバ）。書込みやコマンドの前に通信グループを読み出し、同時に届くすべてのドライバを示します。</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="36"/>
@@ -226,21 +226,26 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="38"/>
+        <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
+        <translation>バス上のドライバが不明でも（--bus-drives なし、この接続のスキャンなし）、通信グループの親になりうるドライバに書込み・コマンドを行います。グループ内のドライバも名前を示されないまま実行します。</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="42"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>このヘルプを表示します。コマンドの後に付けるとそのコマンドのヘルプを表示します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show the version.</source>
         <translation>バージョンを表示します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="47"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>人が読む出力の言語: en、zh_TW、zh_CN、ko、ja (既定: システムの言語)。--json の出力はどの言語でも同じです。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="45"/>
+        <location filename="../cli/CliApp.cpp" line="49"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -1952,6 +1957,51 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusDriveList</name>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="11"/>
+        <source>%1 s ago</source>
+        <translation>%1 秒前</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="13"/>
+        <source>%1 min ago</source>
+        <translation>%1 分前</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="15"/>
+        <source>%1 h ago</source>
+        <translation>%1 時間前</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../cli/BusDriveList.cpp" line="16"/>
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>%n 日前</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="27"/>
+        <source>the simulated bus&apos;s drives</source>
+        <translation>シミュレーションバスのドライバ</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="30"/>
+        <source>the drives last seen on %1</source>
+        <translation>%1 で前回見つかったドライバ</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="31"/>
+        <source>the drives the last scan of %1 found (%2, %3)</source>
+        <translation>%1 の前回のスキャンで見つかったドライバ（%2、%3）</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="38"/>
+        <source>no list of the drives on the bus</source>
+        <translation>バス上のドライバの一覧なし</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusGroups</name>
     <message>
         <location filename="../model/bus/BusGroups.cpp" line="109"/>
@@ -2191,7 +2241,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../model/bus/BusMemory.cpp" line="73"/>
+        <location filename="../model/bus/BusMemory.cpp" line="79"/>
         <source>the simulated bus</source>
         <translation>シミュレーションバス</translation>
     </message>
@@ -2863,7 +2913,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="69"/>
+        <location filename="../cli/CliApp.cpp" line="73"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2878,7 +2928,7 @@ RS-485 Modbus-RTU モータドライバ用立上げツール。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="74"/>
+        <location filename="../cli/CliApp.cpp" line="78"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2889,8 +2939,10 @@ Connection (every command that talks to drives):
   direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
   --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
-Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
-group is checked before a write or command
+Groups: before a write or command, the communication group of the drives on the
+bus is read: --bus-drives LIST (or OPENTOP_BUS_DRIVES), else the drives the last
+scan of this connection found (here or in the window); with neither, a write to a
+drive that can be a group parent is refused unless --no-group-check
 
 Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 (nothing written), 4 verification mismatch or a drive that did not stop,
@@ -2909,8 +2961,9 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
   切り替えるもの。off: アダプタ）、--rts-polarity high|low、--rts-delay US、
   --low-latency on|off（既定 on）。scan でシリアルドライバが受け付けた設定を表示します。
 出力: --json  --trace  --variant VARIANT  --lang CODE
-グループ: --bus-drives LIST（または OPENTOP_BUS_DRIVES）: 書込みやコマンドの前に
-通信グループを確認するドライバ
+グループ: 書込みやコマンドの前に、バス上のドライバの通信グループを読み出します: --bus-drives LIST
+（または OPENTOP_BUS_DRIVES）、なければこの接続の前回のスキャンで見つかったドライバ（ここまたはウィンドウで）。
+どちらもない場合、グループの親になりうるドライバへの書込みは --no-group-check がない限り拒否されます
 
 終了コード: 0 成功、1 通信失敗、2 使い方の誤り、3 不正な値またはファイル
 （何も書き込まない）、4 照合不一致または停止しなかったドライバあり、
@@ -2921,18 +2974,18 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="168"/>
-        <location filename="../cli/CliApp.cpp" line="222"/>
+        <location filename="../cli/CliApp.cpp" line="174"/>
+        <location filename="../cli/CliApp.cpp" line="228"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot; を実行してください。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
+        <location filename="../cli/CliApp.cpp" line="194"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 不明なコマンド &quot;%2&quot;。コマンド: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="196"/>
+        <location filename="../cli/CliApp.cpp" line="202"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2941,12 +2994,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="210"/>
+        <location filename="../cli/CliApp.cpp" line="216"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3 はこのコマンドのオプションではありません。&quot;%1 help %2&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="221"/>
+        <location filename="../cli/CliApp.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2966,37 +3019,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="142"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="231"/>
+        <location filename="../cli/CliContext.cpp" line="253"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="236"/>
+        <location filename="../cli/CliContext.cpp" line="258"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="294"/>
+        <location filename="../cli/CliContext.cpp" line="316"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="298"/>
+        <location filename="../cli/CliContext.cpp" line="320"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="316"/>
+        <location filename="../cli/CliContext.cpp" line="338"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="348"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -7601,83 +7654,98 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="62"/>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="64"/>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="72"/>
-        <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
-        <translation>注: バス上の他のドライバが不明なため、通信グループ %1 のドライバ（%1 宛の送信も実行するドライバ）は検索していません。--bus-drives LIST または OPENTOP_BUS_DRIVES で指定してください</translation>
+        <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
+        <translation>注意: --no-group-check: 通信グループ %1 のドライバ（%1 に送られたものを同時に実行する）は探していません</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="93"/>
+        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
+        <translation>エラー: このバス上のドライバが不明なため、通信グループ %1 のドライバ（%1 に送られたものを応答せずに同時に実行する）を示せません。何も送信していません</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
+        <translation>先にバスをスキャンする（opentop-cli scan）か、--bus-drives LIST でドライバを指定するか、確認せずに送るには --no-group-check を付けてください</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="108"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告: %1 の通信グループを読み出せませんでした</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
+        <translation>注意: バス上のドライバは %1（%2 による）。その後追加されたドライバは次のスキャンまでわかりません</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="109"/>
+        <location filename="../cli/GroupCheck.cpp" line="133"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1 と %2 のすべてに送信するには --yes を付けてください。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="144"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>not readable</source>
         <translation>読出し不可</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="192"/>
         <source>Read back from the drives of the group:</source>
         <translation>グループのドライバから読み戻した値:</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="172"/>
+        <location filename="../cli/GroupCheck.cpp" line="196"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>verified</source>
         <translation>確認済み</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>DIFFERS from what was written</source>
         <translation>書き込んだ値と異なる</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>not verified</source>
         <translation>未確認</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="223"/>
+        <location filename="../cli/GroupCheck.cpp" line="247"/>
         <source>off</source>
         <translation>無効</translation>
     </message>
@@ -13656,93 +13724,98 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="65"/>
+        <location filename="../cli/ScanCommand.cpp" line="66"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>バス上のドライバを検出・識別します（局番 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>問い合わせる最初の局番、1–247（既定 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>問い合わせる最後の局番、1–247（既定 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>局番ごとの待ち時間 (ms)、10–5000（既定: ボーレートから算出。低速なアダプタやゲートウェイでは大きくしてください）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="76"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="78"/>
+        <location filename="../cli/ScanCommand.cpp" line="79"/>
         <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
         <translation>見つからなかった局番を、ドライブが設定できるほかのすべての通信フォーマットでも問い合わせます（8N1 の DBU バス上の 8E1 の DC コントローラ）。形式ごとにスキャンが 1 回増えます。既定はオフ。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="93"/>
+        <location filename="../cli/ScanCommand.cpp" line="94"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>エラー: --%1 は %2–%3 の数値でなければなりません（&quot;%4&quot; は不可）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="105"/>
+        <location filename="../cli/ScanCommand.cpp" line="106"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>エラー: scan は引数を取りません。--from N --to N を使用してください</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="114"/>
+        <location filename="../cli/ScanCommand.cpp" line="115"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>エラー: --from %1 が --to %2 より後です</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="132"/>
+        <location filename="../cli/ScanCommand.cpp" line="133"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="179"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>局番をスキャンする前に中断しました。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="181"/>
+        <location filename="../cli/ScanCommand.cpp" line="182"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>中断: 局番 %1–%2 をスキャンしました（%4 中 %3）。%5–%6 は未問い合わせです。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="195"/>
+        <location filename="../cli/ScanCommand.cpp" line="196"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>エラー: 局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="207"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
+        <source>note: remembered for %1: %2; set, run and restore read their communication groups before a write</source>
+        <translation>注意: %1 について記憶しました: %2。set・run・restore は書込みの前にそれらの通信グループを読み出します</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="219"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注: %1 台のドライバが %2 ms の待ち時間の後に応答したため、再度問い合わせました。スキャンでドライバが見つからない場合は、--wait を長くしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="218"/>
+        <location filename="../cli/ScanCommand.cpp" line="228"/>
         <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
         <translation>警告: 局番 %1 は応答しましたが、さらに %2 回問い合わせても識別に失敗しました。ドライバとしては数えません。手動で追加してください: コマンドでこの局番を指定すると --timeout 内で再識別します (応答の遅い機器では長くしてください)。または通信設定を確認し、長めの --wait で再スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -13753,102 +13826,102 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端抵抗（バスの両端に 120 Ω）とドライバの電源</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="240"/>
+        <location filename="../cli/ScanCommand.cpp" line="250"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>ヒント: %1 同じ接続に次を加えて再試行してください: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="253"/>
+        <location filename="../cli/ScanCommand.cpp" line="263"/>
         <source>Serial line: %1</source>
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="256"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告: %1 このため、スキャンは局番ごとに最大 %2 ms 長く待ちます。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>warning: machine number %1 (%2) answers with garbled replies: two drives probably have the same machine number. Check the address switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：局番 %1 (%2) の応答が壊れています。2 台のドライバが同じ局番になっている可能性があります。このバスのドライバのアドレススイッチを確認し、各ドライバに別の局番を設定して電源を入れ直し、再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>switches</source>
         <translation>スイッチ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>state</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="273"/>
+        <location filename="../cli/ScanCommand.cpp" line="283"/>
         <source>name</source>
         <translation>名前</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="279"/>
+        <location filename="../cli/ScanCommand.cpp" line="289"/>
         <source>comm. group</source>
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="284"/>
+        <location filename="../cli/ScanCommand.cpp" line="294"/>
         <source>line format</source>
         <translation>通信フォーマット</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>the port&apos;s</source>
         <translation>ポートの形式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="361"/>
+        <location filename="../cli/ScanCommand.cpp" line="371"/>
         <source>1 drive found in %1 s</source>
         <translation>1 台のドライバを検出（%1 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="362"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>%1 drives found in %2 s</source>
         <translation>%1 台のドライバを検出（%2 s）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="364"/>
+        <location filename="../cli/ScanCommand.cpp" line="374"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>。局番重複の可能性 1 件: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="366"/>
+        <location filename="../cli/ScanCommand.cpp" line="376"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>。局番重複の可能性 %1 件: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="370"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>; answered, identification failed: %1 (add by hand)</source>
         <translation>; 応答あり・識別失敗: %1 (手動で追加)</translation>
     </message>

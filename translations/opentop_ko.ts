@@ -216,8 +216,8 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="33"/>
-        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
-        <translation>버스에 있는 드라이버, 예: 1,3,5-7 (기본값: OPENTOP_BUS_DRIVES). 쓰기나 명령 전에 이 드라이버들의 통신 그룹을 읽어, 함께 전달되는 드라이버를 모두 표시합니다.</translation>
+        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
+        <translation>버스에 있는 드라이버, 예: 1,3,5-7 (기본값: OPENTOP_BUS_DRIVES, 없으면 이 연결의 마지막 스캔에서 찾은 드라이버): 쓰기나 명령 전에 통신 그룹을 읽어 함께 도달하는 모든 드라이버를 밝힙니다.</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="36"/>
@@ -226,21 +226,26 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="38"/>
+        <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
+        <translation>버스의 드라이버를 모르는 상태에서도(--bus-drives 없음, 이 연결의 스캔 없음) 통신 그룹 부모일 수 있는 드라이버에 쓰거나 명령합니다: 그룹의 드라이버도 이름이 밝혀지지 않은 채 실행합니다.</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="42"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>이 도움말을 표시합니다. 명령 뒤에 쓰면 그 명령의 도움말을 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show the version.</source>
         <translation>버전을 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="47"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>사람이 읽는 출력의 언어: en, zh_TW, zh_CN, ko, ja (기본값: 시스템 언어). --json 출력은 모든 언어에서 같습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="45"/>
+        <location filename="../cli/CliApp.cpp" line="49"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -1952,6 +1957,51 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusDriveList</name>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="11"/>
+        <source>%1 s ago</source>
+        <translation>%1초 전</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="13"/>
+        <source>%1 min ago</source>
+        <translation>%1분 전</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="15"/>
+        <source>%1 h ago</source>
+        <translation>%1시간 전</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../cli/BusDriveList.cpp" line="16"/>
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>%n일 전</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="27"/>
+        <source>the simulated bus&apos;s drives</source>
+        <translation>시뮬레이션 버스의 드라이버</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="30"/>
+        <source>the drives last seen on %1</source>
+        <translation>%1에서 마지막으로 본 드라이버</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="31"/>
+        <source>the drives the last scan of %1 found (%2, %3)</source>
+        <translation>%1의 마지막 스캔에서 찾은 드라이버(%2, %3)</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="38"/>
+        <source>no list of the drives on the bus</source>
+        <translation>버스의 드라이버 목록 없음</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusGroups</name>
     <message>
         <location filename="../model/bus/BusGroups.cpp" line="109"/>
@@ -2191,7 +2241,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../model/bus/BusMemory.cpp" line="73"/>
+        <location filename="../model/bus/BusMemory.cpp" line="79"/>
         <source>the simulated bus</source>
         <translation>시뮬레이션 버스</translation>
     </message>
@@ -2863,7 +2913,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="69"/>
+        <location filename="../cli/CliApp.cpp" line="73"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2878,7 +2928,7 @@ RS-485 Modbus-RTU 모터 드라이버용 커미셔닝 도구.
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="74"/>
+        <location filename="../cli/CliApp.cpp" line="78"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2889,8 +2939,10 @@ Connection (every command that talks to drives):
   direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
   --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
-Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
-group is checked before a write or command
+Groups: before a write or command, the communication group of the drives on the
+bus is read: --bus-drives LIST (or OPENTOP_BUS_DRIVES), else the drives the last
+scan of this connection found (here or in the window); with neither, a write to a
+drive that can be a group parent is refused unless --no-group-check
 
 Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 (nothing written), 4 verification mismatch or a drive that did not stop,
@@ -2909,8 +2961,9 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
   누가 전환하는지; off: 어댑터), --rts-polarity high|low, --rts-delay US,
   --low-latency on|off (기본값 on). scan이 시리얼 드라이버가 받아들인 설정을 표시합니다.
 출력: --json  --trace  --variant VARIANT  --lang CODE
-그룹: --bus-drives LIST (또는 OPENTOP_BUS_DRIVES): 쓰기나 명령 전에 통신 그룹을
-확인할 드라이버
+그룹: 쓰기나 명령 전에 버스에 있는 드라이버의 통신 그룹을 읽습니다: --bus-drives LIST
+(또는 OPENTOP_BUS_DRIVES), 없으면 이 연결의 마지막 스캔에서 찾은 드라이버(여기 또는 창에서);
+둘 다 없으면 그룹 부모일 수 있는 드라이버에 대한 쓰기는 --no-group-check 없이는 거부됩니다
 
 종료 코드: 0 성공, 1 통신 실패, 2 사용법 오류, 3 잘못된 값 또는 파일
 (아무것도 쓰지 않음), 4 검증 불일치 또는 정지하지 않은 드라이버 있음,
@@ -2921,18 +2974,18 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="168"/>
-        <location filename="../cli/CliApp.cpp" line="222"/>
+        <location filename="../cli/CliApp.cpp" line="174"/>
+        <location filename="../cli/CliApp.cpp" line="228"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot;를 실행해 보십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
+        <location filename="../cli/CliApp.cpp" line="194"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 알 수 없는 명령 &quot;%2&quot;; 명령: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="196"/>
+        <location filename="../cli/CliApp.cpp" line="202"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2941,12 +2994,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="210"/>
+        <location filename="../cli/CliApp.cpp" line="216"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3은(는) 이 명령의 옵션이 아닙니다. &quot;%1 help %2&quot;를 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="221"/>
+        <location filename="../cli/CliApp.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2966,37 +3019,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="142"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="231"/>
+        <location filename="../cli/CliContext.cpp" line="253"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="236"/>
+        <location filename="../cli/CliContext.cpp" line="258"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="294"/>
+        <location filename="../cli/CliContext.cpp" line="316"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="298"/>
+        <location filename="../cli/CliContext.cpp" line="320"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="316"/>
+        <location filename="../cli/CliContext.cpp" line="338"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="348"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -7601,83 +7654,98 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="62"/>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="64"/>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="72"/>
-        <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
-        <translation>참고: 버스의 다른 드라이버를 알 수 없어 통신 그룹 %1의 드라이버(%1(으)로 보낸 내용도 실행함)를 찾지 않았습니다. --bus-drives LIST 또는 OPENTOP_BUS_DRIVES로 지정하십시오</translation>
+        <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
+        <translation>참고: --no-group-check: 통신 그룹 %1의 드라이버(%1에 보낸 것을 함께 실행)는 찾지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="93"/>
+        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
+        <translation>오류: 이 버스의 드라이버를 알 수 없어 통신 그룹 %1의 드라이버(%1에 보낸 것을 응답 없이 함께 실행)를 밝힐 수 없습니다. 아무것도 보내지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
+        <translation>먼저 버스를 스캔하거나(opentop-cli scan), --bus-drives LIST로 드라이버를 지정하거나, 확인 없이 보내려면 --no-group-check를 추가하십시오</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="108"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>경고: %1의 통신 그룹을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
+        <translation>참고: 버스의 드라이버는 %1이며 %2에서 가져왔습니다. 그 후 추가된 드라이버는 다음 스캔까지 알 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="109"/>
+        <location filename="../cli/GroupCheck.cpp" line="133"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1과(와) %2 모두에 보내려면 --yes를 추가하십시오. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="144"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>not readable</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="192"/>
         <source>Read back from the drives of the group:</source>
         <translation>그룹 드라이버에서 다시 읽은 값:</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="172"/>
+        <location filename="../cli/GroupCheck.cpp" line="196"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>verified</source>
         <translation>확인됨</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>DIFFERS from what was written</source>
         <translation>쓴 값과 다름</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>not verified</source>
         <translation>확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="223"/>
+        <location filename="../cli/GroupCheck.cpp" line="247"/>
         <source>off</source>
         <translation>사용 안 함</translation>
     </message>
@@ -13656,93 +13724,98 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="65"/>
+        <location filename="../cli/ScanCommand.cpp" line="66"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>버스의 드라이버를 찾아 식별합니다(국번 1–247)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>조회할 첫 국번, 1–247 (기본값 1).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>조회할 마지막 국번, 1–247 (기본값 247).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>국번당 대기 시간(ms), 10–5000 (기본값: 통신 속도에서 산출; 느린 어댑터나 게이트웨이는 늘리십시오).</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="76"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="78"/>
+        <location filename="../cli/ScanCommand.cpp" line="79"/>
         <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
         <translation>찾지 못한 국번을 드라이브가 설정될 수 있는 다른 모든 통신 형식으로도 묻습니다(8N1의 DBU 버스에 있는 8E1의 DC 컨트롤러). 형식마다 스캔이 한 번 더 필요하며 기본은 꺼져 있습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="93"/>
+        <location filename="../cli/ScanCommand.cpp" line="94"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>오류: --%1은(는) %2–%3의 숫자여야 합니다. &quot;%4&quot;은(는) 안 됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="105"/>
+        <location filename="../cli/ScanCommand.cpp" line="106"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>오류: scan은 인수를 받지 않습니다. --from N --to N을 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="114"/>
+        <location filename="../cli/ScanCommand.cpp" line="115"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>오류: --from %1이(가) --to %2보다 뒤입니다</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="132"/>
+        <location filename="../cli/ScanCommand.cpp" line="133"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="179"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>국번을 하나도 스캔하기 전에 중단되었습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="181"/>
+        <location filename="../cli/ScanCommand.cpp" line="182"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>중단됨: 국번 %1–%2을(를) 스캔했습니다(%4개 중 %3개). %5–%6은(는) 조회하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="195"/>
+        <location filename="../cli/ScanCommand.cpp" line="196"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>오류: 국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="207"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
+        <source>note: remembered for %1: %2; set, run and restore read their communication groups before a write</source>
+        <translation>참고: %1에 대해 기억함: %2. set, run, restore는 쓰기 전에 이 드라이버들의 통신 그룹을 읽습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="219"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>참고: 드라이버 %1대가 %2 ms 대기 후에야 응답하여 다시 조회했습니다. 스캔에서 드라이버가 누락되면 --wait를 늘리십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="218"/>
+        <location filename="../cli/ScanCommand.cpp" line="228"/>
         <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
         <translation>경고: 국번 %1이(가) 응답했지만 %2번 더 물어도 식별에 실패했습니다. 드라이버로 세지 않습니다. 직접 추가하십시오: 명령에 이 국번을 지정하면 --timeout 안에 다시 식별합니다(응답이 느린 장치는 늘리십시오). 또는 통신 설정을 확인한 뒤 더 긴 --wait로 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -13753,102 +13826,102 @@ This moves or stops a motor: add --yes to send it.</source>
   - 종단 저항 (버스 양 끝에 120 Ω)과 드라이버 전원.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="240"/>
+        <location filename="../cli/ScanCommand.cpp" line="250"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>힌트: %1 같은 연결에 다음을 추가하여 다시 시도하십시오: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="253"/>
+        <location filename="../cli/ScanCommand.cpp" line="263"/>
         <source>Serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="256"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>경고: %1 이 때문에 스캔 시 국번마다 최대 %2 ms를 더 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>warning: machine number %1 (%2) answers with garbled replies: two drives probably have the same machine number. Check the address switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>경고: 국번 %1(%2)의 응답이 손상되었습니다. 두 드라이버가 같은 국번일 가능성이 큽니다. 이 버스 드라이버들의 주소 스위치를 확인하고, 드라이버마다 다른 국번을 지정한 뒤 전원을 껐다 켜고 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>switches</source>
         <translation>스위치</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>state</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="273"/>
+        <location filename="../cli/ScanCommand.cpp" line="283"/>
         <source>name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="279"/>
+        <location filename="../cli/ScanCommand.cpp" line="289"/>
         <source>comm. group</source>
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="284"/>
+        <location filename="../cli/ScanCommand.cpp" line="294"/>
         <source>line format</source>
         <translation>통신 형식</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>the port&apos;s</source>
         <translation>포트 형식</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="361"/>
+        <location filename="../cli/ScanCommand.cpp" line="371"/>
         <source>1 drive found in %1 s</source>
         <translation>드라이버 1대 발견(%1 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="362"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>%1 drives found in %2 s</source>
         <translation>드라이버 %1대 발견(%2 s)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="364"/>
+        <location filename="../cli/ScanCommand.cpp" line="374"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>; 중복 가능성이 있는 국번 1개: %1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="366"/>
+        <location filename="../cli/ScanCommand.cpp" line="376"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>; 중복 가능성이 있는 국번 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="370"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>; answered, identification failed: %1 (add by hand)</source>
         <translation>; 응답 있음, 식별 실패: %1(직접 추가)</translation>
     </message>

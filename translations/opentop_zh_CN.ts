@@ -216,8 +216,8 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="33"/>
-        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
-        <translation>总线上的驱动器，例如 1,3,5-7（默认：OPENTOP_BUS_DRIVES）：写入或执行命令前，先读取它们的通信组，以列出该操作同时影响的每台驱动器。</translation>
+        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
+        <translation>总线上的驱动器，例如 1,3,5-7（默认：OPENTOP_BUS_DRIVES，否则为此连接上次扫描找到的驱动器）：写入或执行命令前读取其通信组，以列出命令同时到达的每台驱动器。</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="36"/>
@@ -226,21 +226,26 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="38"/>
+        <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
+        <translation>即使不知道总线上有哪些驱动器（没有 --bus-drives，此连接也未扫描过），仍向可能是通信组主站的驱动器写入或执行命令：组内的驱动器也会执行，且不会列出。</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="42"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>显示本帮助；放在命令之后则显示该命令的帮助。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show the version.</source>
         <translation>显示版本。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="47"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>供人阅读的输出的语言：en、zh_TW、zh_CN、ko、ja（默认：系统语言）。--json 输出在各语言中都相同。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="45"/>
+        <location filename="../cli/CliApp.cpp" line="49"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -1952,6 +1957,51 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusDriveList</name>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="11"/>
+        <source>%1 s ago</source>
+        <translation>%1 秒前</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="13"/>
+        <source>%1 min ago</source>
+        <translation>%1 分钟前</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="15"/>
+        <source>%1 h ago</source>
+        <translation>%1 小时前</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../cli/BusDriveList.cpp" line="16"/>
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>%n 天前</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="27"/>
+        <source>the simulated bus&apos;s drives</source>
+        <translation>模拟总线的驱动器</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="30"/>
+        <source>the drives last seen on %1</source>
+        <translation>上次在 %1 看到的驱动器</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="31"/>
+        <source>the drives the last scan of %1 found (%2, %3)</source>
+        <translation>上次扫描 %1 找到的驱动器（%2，%3）</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="38"/>
+        <source>no list of the drives on the bus</source>
+        <translation>没有总线上驱动器的列表</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusGroups</name>
     <message>
         <location filename="../model/bus/BusGroups.cpp" line="109"/>
@@ -2191,7 +2241,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../model/bus/BusMemory.cpp" line="73"/>
+        <location filename="../model/bus/BusMemory.cpp" line="79"/>
         <source>the simulated bus</source>
         <translation>模拟总线</translation>
     </message>
@@ -2863,7 +2913,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="69"/>
+        <location filename="../cli/CliApp.cpp" line="73"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2878,7 +2928,7 @@ RS-485 Modbus-RTU 电机驱动器调试工具。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="74"/>
+        <location filename="../cli/CliApp.cpp" line="78"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2889,8 +2939,10 @@ Connection (every command that talks to drives):
   direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
   --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
-Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
-group is checked before a write or command
+Groups: before a write or command, the communication group of the drives on the
+bus is read: --bus-drives LIST (or OPENTOP_BUS_DRIVES), else the drives the last
+scan of this connection found (here or in the window); with neither, a write to a
+drive that can be a group parent is refused unless --no-group-check
 
 Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 (nothing written), 4 verification mismatch or a drive that did not stop,
@@ -2909,8 +2961,9 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
   收发方向；off：适配器），--rts-polarity high|low，--rts-delay US，
   --low-latency on|off（默认 on）。scan 会显示驱动程序接受的设置。
 输出：--json  --trace  --variant VARIANT  --lang CODE
-通信组：--bus-drives LIST（或 OPENTOP_BUS_DRIVES）：写入或执行命令前
-检查其通信组的驱动器
+通信组：写入或执行命令前，读取总线上驱动器的通信组：--bus-drives LIST
+（或 OPENTOP_BUS_DRIVES），否则为此连接上次扫描找到的驱动器（在此处或在窗口中）；
+两者都没有时，写入可能是组主站的驱动器会被拒绝，除非加上 --no-group-check
 
 退出码：0 成功，1 通信失败，2 用法错误，3 值或文件无效
 （未写入任何内容），4 校验不一致或驱动器未停止，
@@ -2921,18 +2974,18 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="168"/>
-        <location filename="../cli/CliApp.cpp" line="222"/>
+        <location filename="../cli/CliApp.cpp" line="174"/>
+        <location filename="../cli/CliApp.cpp" line="228"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>请尝试 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
+        <location filename="../cli/CliApp.cpp" line="194"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知命令 &quot;%2&quot;；可用命令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="196"/>
+        <location filename="../cli/CliApp.cpp" line="202"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2941,12 +2994,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="210"/>
+        <location filename="../cli/CliApp.cpp" line="216"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是该命令的选项；请参阅 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="221"/>
+        <location filename="../cli/CliApp.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2966,37 +3019,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="142"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="231"/>
+        <location filename="../cli/CliContext.cpp" line="253"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="236"/>
+        <location filename="../cli/CliContext.cpp" line="258"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="294"/>
+        <location filename="../cli/CliContext.cpp" line="316"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="298"/>
+        <location filename="../cli/CliContext.cpp" line="320"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="316"/>
+        <location filename="../cli/CliContext.cpp" line="338"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="348"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -7601,83 +7654,98 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="62"/>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="64"/>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="72"/>
-        <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
-        <translation>注意：总线上的其他驱动器未知，因此未查找通信组 %1 中的驱动器（它们也会执行发往 %1 的内容）；请用 --bus-drives LIST 或 OPENTOP_BUS_DRIVES 指定</translation>
+        <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
+        <translation>注意：--no-group-check：未查找通信组 %1 中的驱动器（它们也会执行发往 %1 的内容）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="93"/>
+        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
+        <translation>错误：不知道此总线上有哪些驱动器，因此无法列出通信组 %1 中的驱动器（它们也会执行发往 %1 的内容，且不应答）；未发送任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
+        <translation>请先扫描总线（opentop-cli scan）、用 --bus-drives LIST 指定其驱动器，或加上 --no-group-check 不检查直接发送</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="108"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：无法读取 %1 的通信组</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
+        <translation>注意：总线上的驱动器为 %1，取自%2；之后加入的驱动器要到下次扫描才会知道</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="109"/>
+        <location filename="../cli/GroupCheck.cpp" line="133"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才会发送给 %1 和 %2 全部；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="144"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>not readable</source>
         <translation>不可读</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="192"/>
         <source>Read back from the drives of the group:</source>
         <translation>从该组的驱动器回读：</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="172"/>
+        <location filename="../cli/GroupCheck.cpp" line="196"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>verified</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>DIFFERS from what was written</source>
         <translation>与写入值不同</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>not verified</source>
         <translation>未确认</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="223"/>
+        <location filename="../cli/GroupCheck.cpp" line="247"/>
         <source>off</source>
         <translation>关闭</translation>
     </message>
@@ -13656,93 +13724,98 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="65"/>
+        <location filename="../cli/ScanCommand.cpp" line="66"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>查找并识别总线上的驱动器（站号 1–247）</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>询问的起始站号，1–247（默认 1）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>询问的结束站号，1–247（默认 247）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每个站号的等待时间（ms），10–5000（默认：根据波特率得出；适配器或网关较慢时请加大）。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="76"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="78"/>
+        <location filename="../cli/ScanCommand.cpp" line="79"/>
         <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
         <translation>对没有找到的站号，也以驱动器可设定的其他每种通信格式询问（8N1 的 DBU 总线上 8E1 的 DC 控制器）：每种格式多扫描一轮，默认关闭。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="93"/>
+        <location filename="../cli/ScanCommand.cpp" line="94"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>错误：--%1 必须是 %2–%3 的数字，而不是 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="105"/>
+        <location filename="../cli/ScanCommand.cpp" line="106"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>错误：scan 不接受参数；请使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="114"/>
+        <location filename="../cli/ScanCommand.cpp" line="115"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>错误：--from %1 大于 --to %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="132"/>
+        <location filename="../cli/ScanCommand.cpp" line="133"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="179"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在扫描任何站号之前已中断。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="181"/>
+        <location filename="../cli/ScanCommand.cpp" line="182"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中断：已扫描站号 %1–%2（%4 个中的 %3 个）；%5–%6 未询问。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="195"/>
+        <location filename="../cli/ScanCommand.cpp" line="196"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>错误：扫描在站号 %1 处停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="207"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
+        <source>note: remembered for %1: %2; set, run and restore read their communication groups before a write</source>
+        <translation>注意：已为 %1 记住：%2；set、run 和 restore 写入前会读取其通信组</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="219"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驱动器在 %2 ms 等待时间之后才应答，已重新询问；如果扫描漏掉驱动器，请加大 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="218"/>
+        <location filename="../cli/ScanCommand.cpp" line="228"/>
         <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
         <translation>警告：站号 %1 有应答，但识别失败，再询问 %2 次仍然如此；它不计为驱动器。请手动添加：在命令中指定这个站号（届时会在 --timeout 内重新识别；设备应答慢时请加大），或检查它的通信设定后用更长的 --wait 重新扫描。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -13753,102 +13826,102 @@ This moves or stops a motor: add --yes to send it.</source>
   - 终端电阻（总线两端各 120 Ω），以及驱动器是否已通电。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="240"/>
+        <location filename="../cli/ScanCommand.cpp" line="250"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>提示：%1 请使用相同连接并加上以下选项重试：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="253"/>
+        <location filename="../cli/ScanCommand.cpp" line="263"/>
         <source>Serial line: %1</source>
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="256"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告：%1 因此扫描时每个站号最多会多等待 %2 ms。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>warning: machine number %1 (%2) answers with garbled replies: two drives probably have the same machine number. Check the address switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：站号 %1（%2）的应答损坏：可能有两台驱动器使用相同的站号。请检查此总线上各驱动器的地址开关，为每台驱动器设定各自的站号，断电再上电后重新扫描。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>switches</source>
         <translation>开关</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>state</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="273"/>
+        <location filename="../cli/ScanCommand.cpp" line="283"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="279"/>
+        <location filename="../cli/ScanCommand.cpp" line="289"/>
         <source>comm. group</source>
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="284"/>
+        <location filename="../cli/ScanCommand.cpp" line="294"/>
         <source>line format</source>
         <translation>通信格式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>the port&apos;s</source>
         <translation>端口的</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="361"/>
+        <location filename="../cli/ScanCommand.cpp" line="371"/>
         <source>1 drive found in %1 s</source>
         <translation>在 %1 s 内找到 1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="362"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>%1 drives found in %2 s</source>
         <translation>在 %2 s 内找到 %1 台驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="364"/>
+        <location filename="../cli/ScanCommand.cpp" line="374"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 个可能重复的站号：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="366"/>
+        <location filename="../cli/ScanCommand.cpp" line="376"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 个可能重复的站号：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="370"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>; answered, identification failed: %1 (add by hand)</source>
         <translation>；有应答但识别失败：%1（请手动添加）</translation>
     </message>

@@ -216,8 +216,8 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="33"/>
-        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES): before a write or command, their communication group is read to name every drive it also reaches.</source>
-        <translation>匯流排上的驅動器，例如 1,3,5-7 (預設：OPENTOP_BUS_DRIVES)：寫入或下指令前，會先讀取其通訊群組，列出該操作同時送達的每台驅動器。</translation>
+        <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
+        <translation>匯流排上的驅動器，例如 1,3,5-7 (預設：OPENTOP_BUS_DRIVES，否則為此連線上次掃描找到的驅動器)：寫入或下指令前會讀取其通訊群組，以列出指令同時送達的每台驅動器。</translation>
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="36"/>
@@ -226,21 +226,26 @@
     </message>
     <message>
         <location filename="../cli/CliApp.cpp" line="38"/>
+        <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
+        <translation>即使不知道匯流排上有哪些驅動器 (沒有 --bus-drives，此連線也未曾掃描)，仍寫入或下指令給可能為通訊群組主站的驅動器：其群組內的驅動器也會執行，且不會列出。</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="42"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>顯示此說明；放在指令之後則顯示該指令的說明。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="39"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show the version.</source>
         <translation>顯示版本。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="47"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>供人閱讀之輸出的語言：en、zh_TW、zh_CN、ko、ja（預設：系統語言）。--json 輸出在各語言中都相同。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="45"/>
+        <location filename="../cli/CliApp.cpp" line="49"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -1952,6 +1957,51 @@ Drives: %5</source>
     </message>
 </context>
 <context>
+    <name>opentop::BusDriveList</name>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="11"/>
+        <source>%1 s ago</source>
+        <translation>%1 秒前</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="13"/>
+        <source>%1 min ago</source>
+        <translation>%1 分鐘前</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="15"/>
+        <source>%1 h ago</source>
+        <translation>%1 小時前</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../cli/BusDriveList.cpp" line="16"/>
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>%n 天前</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="27"/>
+        <source>the simulated bus&apos;s drives</source>
+        <translation>模擬匯流排的驅動器</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="30"/>
+        <source>the drives last seen on %1</source>
+        <translation>上次在 %1 看到的驅動器</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="31"/>
+        <source>the drives the last scan of %1 found (%2, %3)</source>
+        <translation>上次掃描 %1 找到的驅動器 (%2，%3)</translation>
+    </message>
+    <message>
+        <location filename="../cli/BusDriveList.cpp" line="38"/>
+        <source>no list of the drives on the bus</source>
+        <translation>沒有匯流排上驅動器的清單</translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusGroups</name>
     <message>
         <location filename="../model/bus/BusGroups.cpp" line="109"/>
@@ -2191,7 +2241,7 @@ Drives: %5</source>
 <context>
     <name>opentop::BusMemory</name>
     <message>
-        <location filename="../model/bus/BusMemory.cpp" line="73"/>
+        <location filename="../model/bus/BusMemory.cpp" line="79"/>
         <source>the simulated bus</source>
         <translation>模擬匯流排</translation>
     </message>
@@ -2863,7 +2913,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="69"/>
+        <location filename="../cli/CliApp.cpp" line="73"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2878,7 +2928,7 @@ RS-485 Modbus-RTU 馬達驅動器試車調機工具。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="74"/>
+        <location filename="../cli/CliApp.cpp" line="78"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2889,8 +2939,10 @@ Connection (every command that talks to drives):
   direction; off: the adapter), --rts-polarity high|low, --rts-delay US,
   --low-latency on|off (default on). scan says what the driver accepted.
 Output: --json  --trace  --variant VARIANT  --lang CODE
-Groups: --bus-drives LIST (or OPENTOP_BUS_DRIVES): the drives whose communication
-group is checked before a write or command
+Groups: before a write or command, the communication group of the drives on the
+bus is read: --bus-drives LIST (or OPENTOP_BUS_DRIVES), else the drives the last
+scan of this connection found (here or in the window); with neither, a write to a
+drive that can be a group parent is refused unless --no-group-check
 
 Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 (nothing written), 4 verification mismatch or a drive that did not stop,
@@ -2909,8 +2961,9 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
   收發方向；off：轉接器)，--rts-polarity high|low，--rts-delay US，
   --low-latency on|off (預設 on)。scan 會顯示驅動程式接受的設定。
 輸出：--json  --trace  --variant VARIANT  --lang CODE
-群組：--bus-drives LIST (或 OPENTOP_BUS_DRIVES)：寫入或下指令前
-要檢查其通訊群組的驅動器
+群組：寫入或下指令前，會讀取匯流排上驅動器的通訊群組：--bus-drives LIST
+(或 OPENTOP_BUS_DRIVES)，否則為此連線上次掃描找到的驅動器 (在此或在視窗中)；
+兩者皆無時，寫入可能為群組主站的驅動器會被拒絕，除非加上 --no-group-check
 
 結束碼：0 成功，1 通訊失敗，2 用法錯誤，3 值或檔案無效
 (未寫入任何資料)，4 驗證不符或驅動器未停止，
@@ -2921,18 +2974,18 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="168"/>
-        <location filename="../cli/CliApp.cpp" line="222"/>
+        <location filename="../cli/CliApp.cpp" line="174"/>
+        <location filename="../cli/CliApp.cpp" line="228"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>請執行 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
+        <location filename="../cli/CliApp.cpp" line="194"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知指令 &quot;%2&quot;；可用指令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="196"/>
+        <location filename="../cli/CliApp.cpp" line="202"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2941,12 +2994,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="210"/>
+        <location filename="../cli/CliApp.cpp" line="216"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是此指令的選項；請參閱 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="221"/>
+        <location filename="../cli/CliApp.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -2966,37 +3019,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>序列線路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="142"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="231"/>
+        <location filename="../cli/CliContext.cpp" line="253"/>
         <source>machine number %1: no connection</source>
         <translation>機號 %1：未連線</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="236"/>
+        <location filename="../cli/CliContext.cpp" line="258"/>
         <source>machine number %1: %2%3</source>
         <translation>機號 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="294"/>
+        <location filename="../cli/CliContext.cpp" line="316"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="298"/>
+        <location filename="../cli/CliContext.cpp" line="320"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驅動器機型；請使用下列其中之一：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="316"/>
+        <location filename="../cli/CliContext.cpp" line="338"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是 1–247 的機號，也不是 3-8 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="348"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
     </message>
@@ -7601,83 +7654,98 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="62"/>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="64"/>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
         <location filename="../cli/GroupCheck.cpp" line="72"/>
-        <source>note: the other drives on the bus are not known, so drives in communication group %1 (which also execute what is sent to %1) were not looked for; name them with --bus-drives LIST or OPENTOP_BUS_DRIVES</source>
-        <translation>注意：匯流排上的其他驅動器未知，因此未尋找通訊群組 %1 中的驅動器 (它們也會執行送往 %1 的指令)；請以 --bus-drives LIST 或 OPENTOP_BUS_DRIVES 指定</translation>
+        <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
+        <translation>注意：--no-group-check：未尋找通訊群組 %1 內的驅動器 (它們也會執行送往 %1 的內容)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="93"/>
+        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
+        <translation>錯誤：不知道此匯流排上有哪些驅動器，因此無法列出通訊群組 %1 內的驅動器 (它們也會執行送往 %1 的內容，且不回應)；未送出任何內容</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
+        <translation>請先掃描匯流排 (opentop-cli scan)、以 --bus-drives LIST 指定其驅動器，或加上 --no-group-check 不檢查直接送出</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="108"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：無法讀取 %1 的通訊群組</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="106"/>
+        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
+        <translation>注意：匯流排上的驅動器為 %1，取自%2；之後加入的驅動器要到下次掃描才會知道</translation>
+    </message>
+    <message>
+        <location filename="../cli/GroupCheck.cpp" line="130"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="109"/>
+        <location filename="../cli/GroupCheck.cpp" line="133"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才會送往 %1 及 %2 全部；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="144"/>
+        <location filename="../cli/GroupCheck.cpp" line="168"/>
         <source>not readable</source>
         <translation>無法讀取</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="192"/>
         <source>Read back from the drives of the group:</source>
         <translation>從群組中的驅動器回讀：</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="169"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="172"/>
+        <location filename="../cli/GroupCheck.cpp" line="196"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="173"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>verified</source>
         <translation>已確認</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="174"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>DIFFERS from what was written</source>
         <translation>與寫入值不同</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="175"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>not verified</source>
         <translation>未確認</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="223"/>
+        <location filename="../cli/GroupCheck.cpp" line="247"/>
         <source>off</source>
         <translation>停用</translation>
     </message>
@@ -13656,93 +13724,98 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::ScanCommand</name>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="65"/>
+        <location filename="../cli/ScanCommand.cpp" line="66"/>
         <source>Find and identify the drives on the bus (machine numbers 1–247)</source>
         <translation>尋找並識別匯流排上的驅動器 (機號 1–247)</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
+        <location filename="../cli/ScanCommand.cpp" line="72"/>
         <source>First machine number to ask, 1–247 (default 1).</source>
         <translation>起始詢問機號，1–247 (預設 1)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="71"/>
         <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="72"/>
+        <location filename="../cli/ScanCommand.cpp" line="73"/>
         <source>Last machine number to ask, 1–247 (default 247).</source>
         <translation>最後詢問機號，1–247 (預設 247)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="74"/>
+        <location filename="../cli/ScanCommand.cpp" line="75"/>
         <source>Wait per machine number in ms, 10–5000 (default: derived from the baud rate; raise it for slow adapters or gateways).</source>
         <translation>每個機號的等待時間，單位 ms，10–5000 (預設：依鮑率計算；轉接器或閘道器較慢時請加大)。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="76"/>
+        <location filename="../cli/ScanCommand.cpp" line="77"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="78"/>
+        <location filename="../cli/ScanCommand.cpp" line="79"/>
         <source>Also ask the machine numbers not found in every other line format a drive can be set to (a DC controller at 8E1 on a DBU bus at 8N1): one more pass per format, off by default.</source>
         <translation>對沒有找到的機號，也以驅動器可設定的其他每種通訊格式詢問（8N1 的 DBU 匯流排上 8E1 的 DC 控制器）：每種格式多掃描一輪，預設關閉。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="93"/>
+        <location filename="../cli/ScanCommand.cpp" line="94"/>
         <source>error: --%1 must be a number %2–%3, not &quot;%4&quot;</source>
         <translation>錯誤：--%1 必須是 %2–%3 的數字，而非 &quot;%4&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="105"/>
+        <location filename="../cli/ScanCommand.cpp" line="106"/>
         <source>error: scan takes no arguments; use --from N --to N</source>
         <translation>錯誤：scan 不接受引數；請使用 --from N --to N</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="114"/>
+        <location filename="../cli/ScanCommand.cpp" line="115"/>
         <source>error: --from %1 is after --to %2</source>
         <translation>錯誤：--from %1 大於 --to %2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="132"/>
+        <location filename="../cli/ScanCommand.cpp" line="133"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each…</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms…</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="179"/>
+        <location filename="../cli/ScanCommand.cpp" line="180"/>
         <source>Interrupted before any machine number was scanned.</source>
         <translation>在掃描任何機號前中斷。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="181"/>
+        <location filename="../cli/ScanCommand.cpp" line="182"/>
         <source>Interrupted: machine numbers %1–%2 were scanned (%3 of %4); %5–%6 were not asked.</source>
         <translation>已中斷：已掃描機號 %1–%2 (%4 個中的 %3 個)；%5–%6 未詢問。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="195"/>
+        <location filename="../cli/ScanCommand.cpp" line="196"/>
         <source>error: the scan stopped at machine number %1: %2</source>
         <translation>錯誤：掃描在機號 %1 停止：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="207"/>
+        <location filename="../cli/ScanCommand.cpp" line="208"/>
+        <source>note: remembered for %1: %2; set, run and restore read their communication groups before a write</source>
+        <translation>注意：已為 %1 記住：%2；set、run 與 restore 寫入前會讀取其通訊群組</translation>
+    </message>
+    <message>
+        <location filename="../cli/ScanCommand.cpp" line="217"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="209"/>
+        <location filename="../cli/ScanCommand.cpp" line="219"/>
         <source>note: %1 drive(s) answered only after the %2 ms wait and were asked again; if scans miss drives, give a longer --wait.</source>
         <translation>注意：%1 台驅動器在 %2 ms 等待時間後才回應，已重新詢問；若掃描遺漏驅動器，請加長 --wait。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="218"/>
+        <location filename="../cli/ScanCommand.cpp" line="228"/>
         <source>warning: machine number %1 answered, but its identification failed, also when asked again %2 more times; it is not counted as a drive. Add it by hand: name it in a command (it is identified again then, within --timeout; raise it for a slow device), or check its line settings and scan again with a longer --wait.</source>
         <translation>警告：機號 %1 有回應，但識別失敗，再詢問 %2 次也一樣；它不計為驅動器。請手動加入：在指令中指定這個機號 (屆時會在 --timeout 內重新識別；裝置回應慢時請加大)，或檢查它的通訊設定後以較長的 --wait 重新掃描。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="227"/>
+        <location filename="../cli/ScanCommand.cpp" line="237"/>
         <source>No drive answered at machine numbers %1–%2. Check:
   - the wiring, and the A/B polarity (swap A and B if unsure);
   - baud rate and parity: the drives&apos; settings must match %3 (--baud, --parity, --family);
@@ -13753,102 +13826,102 @@ This moves or stops a motor: add --yes to send it.</source>
   - 終端電阻 (匯流排兩端各 120 Ω) 以及驅動器是否已通電。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="240"/>
+        <location filename="../cli/ScanCommand.cpp" line="250"/>
         <source>hint: %1 Retry with the same connection and: %2</source>
         <translation>提示：%1 請以相同連線加上以下選項重試：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="253"/>
+        <location filename="../cli/ScanCommand.cpp" line="263"/>
         <source>Serial line: %1</source>
         <translation>序列線路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="256"/>
+        <location filename="../cli/ScanCommand.cpp" line="266"/>
         <source>warning: %1 The scan waits up to %2 ms longer per machine number because of it.</source>
         <translation>警告：%1 因此掃描時每個機號最多會多等待 %2 ms。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="380"/>
+        <location filename="../cli/ScanCommand.cpp" line="390"/>
         <source>warning: machine number %1 (%2) answers with garbled replies: two drives probably have the same machine number. Check the address switches of the drives on this bus, give each drive its own machine number, power them off and on, and scan again.</source>
         <translation>警告：機號 %1 (%2) 的回應損壞：可能有兩台驅動器使用相同機號。請檢查此匯流排上各驅動器的位址開關，為每台驅動器設定各自的機號，斷電再上電後重新掃描。</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>hex</source>
         <translation>十六進位</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>switches</source>
         <translation>開關</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="266"/>
+        <location filename="../cli/ScanCommand.cpp" line="276"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="267"/>
+        <location filename="../cli/ScanCommand.cpp" line="277"/>
         <source>state</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="273"/>
+        <location filename="../cli/ScanCommand.cpp" line="283"/>
         <source>name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="279"/>
+        <location filename="../cli/ScanCommand.cpp" line="289"/>
         <source>comm. group</source>
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="284"/>
+        <location filename="../cli/ScanCommand.cpp" line="294"/>
         <source>line format</source>
         <translation>通訊格式</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="301"/>
+        <location filename="../cli/ScanCommand.cpp" line="311"/>
         <source>the port&apos;s</source>
         <translation>連接埠的</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="361"/>
+        <location filename="../cli/ScanCommand.cpp" line="371"/>
         <source>1 drive found in %1 s</source>
         <translation>於 %1 s 內找到 1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="362"/>
+        <location filename="../cli/ScanCommand.cpp" line="372"/>
         <source>%1 drives found in %2 s</source>
         <translation>於 %2 s 內找到 %1 台驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="364"/>
+        <location filename="../cli/ScanCommand.cpp" line="374"/>
         <source>; 1 possible duplicate machine number: %1</source>
         <translation>；1 個可能重複的機號：%1</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="366"/>
+        <location filename="../cli/ScanCommand.cpp" line="376"/>
         <source>; %1 possible duplicate machine numbers: %2</source>
         <translation>；%1 個可能重複的機號：%2</translation>
     </message>
     <message>
-        <location filename="../cli/ScanCommand.cpp" line="370"/>
+        <location filename="../cli/ScanCommand.cpp" line="380"/>
         <source>; answered, identification failed: %1 (add by hand)</source>
         <translation>；有回應但識別失敗：%1 (請手動加入)</translation>
     </message>

@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QSettings>
 #include <QStringList>
+#include <algorithm>
 #include <memory>
 
 namespace opentop {
@@ -24,6 +25,11 @@ QString encoded(const QString& key)
 QString settingsGroup(const QString& key)
 {
     return QStringLiteral("busMemory/") + encoded(key);
+}
+
+QString savedAtEntry(const QString& key)
+{
+    return QStringLiteral("busMemorySaved/") + encoded(key);
 }
 
 QString namesGroup(const QString& key)
@@ -88,14 +94,50 @@ QVector<BusMemory::Drive> BusMemory::present(const BusDrives& drives)
     return out;
 }
 
+QVector<BusMemory::Drive> BusMemory::present(const QVector<DeviceInfo>& devices)
+{
+    QVector<Drive> out;
+    for (const DeviceInfo& info : devices) {
+        if (info.state != DeviceInfo::State::Present || info.family.isEmpty())
+            continue;
+        out << Drive{info.slave, info.variant.isEmpty() ? info.family : info.variant, info.model,
+                     QString(), info.line};
+    }
+    return out;
+}
+
 void BusMemory::save(const QString& key, const BusDrives& drives)
+{
+    save(key, present(drives));
+}
+
+void BusMemory::update(const QString& key, int from, int to, const QVector<Drive>& found)
+{
+    QVector<Drive> drives;
+    for (const Drive& d : load(key)) {
+        if (d.slave < from || d.slave > to)
+            drives << d;
+    }
+    drives += found;
+    std::sort(drives.begin(), drives.end(),
+              [](const Drive& a, const Drive& b) { return a.slave < b.slave; });
+    save(key, drives);
+}
+
+QDateTime BusMemory::savedAt(const QString& key)
+{
+    return store()->value(savedAtEntry(key)).toDateTime();
+}
+
+void BusMemory::save(const QString& key, const QVector<Drive>& drives)
 {
     const std::unique_ptr<QSettings> kept = store();
     QSettings& settings = *kept;
     settings.remove(settingsGroup(key));
+    settings.setValue(savedAtEntry(key), QDateTime::currentDateTimeUtc());
     settings.beginWriteArray(settingsGroup(key));
     int index = 0;
-    for (const Drive& d : present(drives)) {
+    for (const Drive& d : drives) {
         settings.setArrayIndex(index++);
         settings.setValue(QStringLiteral("slave"), d.slave);
         settings.setValue(QStringLiteral("type"), d.type);
@@ -132,7 +174,9 @@ QVector<BusMemory::Drive> BusMemory::load(const QString& key)
 
 void BusMemory::forget(const QString& key)
 {
-    store()->remove(settingsGroup(key));
+    const std::unique_ptr<QSettings> settings = store();
+    settings->remove(settingsGroup(key));
+    settings->remove(savedAtEntry(key));
 }
 
 QHash<int, QString> BusMemory::names(const QString& key)

@@ -1,6 +1,9 @@
 #pragma once
 
+#include "model/session/DeviceInfo.h"
 #include "transport/ConnectionSettings.h"
+
+#include <QDateTime>
 
 #include <QHash>
 #include <QMap>
@@ -36,9 +39,18 @@ public:
 
     // The drives present in `drives`, as they would be remembered.
     static QVector<Drive> present(const BusDrives& drives);
-    // Remembers the drives present in `drives` (replacing what was remembered for `key`).
+    // The drives present among a scan's `devices`.
+    static QVector<Drive> present(const QVector<DeviceInfo>& devices);
+    // Remembers the drives present in `drives` (replacing what was remembered for `key`), and
+    // when.
     static void save(const QString& key, const BusDrives& drives);
+    static void save(const QString& key, const QVector<Drive>& drives);
+    // A scan of machine numbers `from`–`to` found `found`: what was remembered in that range is
+    // replaced, the rest kept (a scan of 1–10 says nothing of drive 30).
+    static void update(const QString& key, int from, int to, const QVector<Drive>& found);
     static QVector<Drive> load(const QString& key);
+    // When the drives of `key` were last saved; invalid when never (or before this was kept).
+    static QDateTime savedAt(const QString& key);
     static void forget(const QString& key);
     // The drives as the types to identify at each machine number.
     static QHash<int, QString> types(const QVector<Drive>& drives);

@@ -84,6 +84,7 @@ protected:
         return runCli(QStringList{QStringLiteral("--tcp"),
                                   QStringLiteral("127.0.0.1:%1").arg(proxy->port()),
                                   QStringLiteral("--variant"), QStringLiteral("1=dbu200"),
+                                  QStringLiteral("--bus-drives"), QStringLiteral("1"),
                                   QStringLiteral("--timeout"), QStringLiteral("50"),
                                   QStringLiteral("--retries"), QStringLiteral("0")} +
                       args);

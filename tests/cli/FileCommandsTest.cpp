@@ -32,12 +32,14 @@ protected:
         ASSERT_TRUE(dir.isValid());
     }
 
-    // A command against the TCP bus; the DBU does not tell its variant, so it is named.
+    // A command against the TCP bus; the DBU does not tell its variant, so it is named, and the
+    // drives on the bus are listed (a restore names every drive its writes reach).
     CliRun cli(QStringList args)
     {
         return runCli(args << QStringLiteral("--tcp")
                            << QStringLiteral("127.0.0.1:%1").arg(server->port())
-                           << QStringLiteral("--variant") << QStringLiteral("1=dbu200"));
+                           << QStringLiteral("--variant") << QStringLiteral("1=dbu200")
+                           << QStringLiteral("--bus-drives") << QStringLiteral("1,7"));
     }
 
     QString path(const char* name) const { return dir.filePath(QString::fromLatin1(name)); }

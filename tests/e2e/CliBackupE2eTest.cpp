@@ -30,7 +30,7 @@ protected:
     QStringList arguments(const QStringList& command) const
     {
         return QStringList{QStringLiteral("--port"), sim.pty, QStringLiteral("--variant"),
-                           QStringLiteral("1=dbu200")} +
+                           QStringLiteral("1=dbu200"), QStringLiteral("--bus-drives=1,7")} +
                command;
     }
 

@@ -30,6 +30,7 @@ TEST(CliDriveE2e, RunMonitorAndStopAllOverThePty)
     ASSERT_TRUE(
         sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@1,dcpid@7")}, &error))
         << error.toStdString();
+    ASSERT_EQ(scanOn(sim.pty, 1, 8).code, 0);
 
     // In I/O priority the drive is left alone.
     CliResult r = cli(sim.pty, {QStringLiteral("run"), QStringLiteral("1"), QStringLiteral("start"),
@@ -78,6 +79,7 @@ TEST(CliDriveE2e, AlarmsAndAStopThatIsIgnored)
 {
     SimProcess sim;
     ASSERT_TRUE(sim.start({QStringLiteral("--devices"), QStringLiteral("dbu200@1,dbu400@2")}));
+    ASSERT_EQ(scanOn(sim.pty, 1, 4).code, 0);
     sim.command(QStringLiteral("alarm 1 7"));
     CliResult r = cli(sim.pty, {QStringLiteral("alarms"), QStringLiteral("1")});
     EXPECT_EQ(r.code, 0) << r.err.toStdString();

@@ -2,9 +2,12 @@
 // a group parent also reaches its children (TROY manual 11-3), so the CLI names them, refuses
 // without --yes (nothing sent), and with --yes reads back what the children hold; scan shows
 // each drive's group and the setups that are wrong.
+#include "model/bus/BusMemory.h"
 #include "tests/e2e/CliProcess.h"
 #include "tests/e2e/SimProcess.h"
+#include "transport/ConnectionSettings.h"
 
+using namespace opentop;
 using namespace opentop::test;
 
 namespace {
@@ -21,9 +24,14 @@ void startGroupedBus(SimProcess* sim, const QString& devices)
 {
     QString error;
     ASSERT_TRUE(sim->start({QStringLiteral("--devices"), devices}, &error)) << qPrintable(error);
+    // A pty's name comes back for the next simulator: nothing remembered for it is this bus.
+    ConnectionSettings settings;
+    settings.kind = ConnectionSettings::Kind::Serial;
+    settings.port = sim->pty;
+    BusMemory::forget(BusMemory::key(settings));
     for (const QString& child : {QStringLiteral("3"), QStringLiteral("5")}) {
         const CliResult r =
-            cli(*sim, {QStringLiteral("set"), child, QStringLiteral("comm.group=1")});
+            cli(*sim, {kBus, QStringLiteral("set"), child, QStringLiteral("comm.group=1")});
         ASSERT_EQ(r.code, 0) << qPrintable(r.err);
     }
     ASSERT_EQ(sim->get(3, 0x00F5), 1);
@@ -74,10 +82,15 @@ TEST(CliGroupE2e, AWriteToAGroupParentIsRefusedWithoutYesAndReadBackFromTheChild
     EXPECT_EQ(sim.get(3, 0xCA03), 1777);
     EXPECT_EQ(sim.get(5, 0xCA03), 1777);
 
-    // Without the list of drives the CLI cannot know the children, and says so.
-    r = cli(sim, {QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("spno2.speed=1800")});
-    EXPECT_EQ(r.code, 0) << qPrintable(r.err);
+    // Without a list of the drives (and no scan of this port) the children cannot be named:
+    // refused, nothing sent.
+    r = cli(sim, {QStringLiteral("set"), QStringLiteral("1"), QStringLiteral("spno2.speed=1800"),
+                  QStringLiteral("--yes")});
+    EXPECT_EQ(r.code, 2) << qPrintable(r.err);
     EXPECT_TRUE(r.err.contains(QStringLiteral("--bus-drives"))) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("nothing was sent"))) << qPrintable(r.err);
+    for (int id : {1, 3, 5})
+        EXPECT_EQ(sim.get(id, 0xCA03), 1777) << id;
     sim.terminate();
 }
 
@@ -117,7 +130,8 @@ TEST(CliGroupE2e, ScanShowsTheGroupsAndAChildOfAMissingParent)
     SimProcess sim;
     startGroupedBus(&sim, QStringLiteral("dbu200@1,dbu200@3,dbu200@5,dcpid@7"));
     ASSERT_EQ(
-        cli(sim, {QStringLiteral("set"), QStringLiteral("5"), QStringLiteral("comm.group=9")}).code,
+        cli(sim, {kBus, QStringLiteral("set"), QStringLiteral("5"), QStringLiteral("comm.group=9")})
+            .code,
         0);
     const CliResult r =
         cli(sim, {QStringLiteral("scan"), QStringLiteral("--to"), QStringLiteral("10")});

@@ -40,7 +40,7 @@ protected:
         QProcess cli;
         cli.start(cliProgram(),
                   QStringList{QStringLiteral("--port"), sim.pty, QStringLiteral("--variant"),
-                              QStringLiteral("1=dbu200")} +
+                              QStringLiteral("1=dbu200"), QStringLiteral("--bus-drives=1")} +
                       command);
         EXPECT_TRUE(cli.waitForStarted(5000));
         return finishCli(cli, 15000);

@@ -24,6 +24,7 @@ TEST(CliParameterE2e, SetReachesTheDriveAndAWrongValueSendsNothing)
     ASSERT_TRUE(
         sim.start({QStringLiteral("--devices"), QStringLiteral("dbu400@150,dcpid@7")}, &error))
         << qPrintable(error);
+    ASSERT_EQ(scanOn(sim.pty, 150, 150).code, 0);
     CliResult r = cli(sim, {QStringLiteral("--variant"), QStringLiteral("dbu400"),
                             QStringLiteral("set"), QStringLiteral("150"),
                             QStringLiteral("spno2.speed=1800"), QStringLiteral("spno2.accel=2.5")});

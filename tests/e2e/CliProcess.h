@@ -45,4 +45,12 @@ inline CliResult runCliOn(const QString& port, const QStringList& args, int time
     return finishCli(process, timeoutMs);
 }
 
+// opentop-cli --port PORT scan --from FROM --to TO: what a technician does first on a bus (the
+// drives found are remembered, so writes and commands know the communication groups).
+inline CliResult scanOn(const QString& port, int from, int to)
+{
+    return runCliOn(port, {QStringLiteral("scan"), QStringLiteral("--from"), QString::number(from),
+                           QStringLiteral("--to"), QString::number(to)});
+}
+
 } // namespace opentop::test

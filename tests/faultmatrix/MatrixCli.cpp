@@ -33,10 +33,12 @@ QString CliRun::reason() const
     return lines.join(QStringLiteral("; "));
 }
 
-MatrixCli::MatrixCli(const QString& binDir, const QString& port, const QString& variants)
+MatrixCli::MatrixCli(const QString& binDir, const QString& port, const QString& variants,
+                     const QString& busDrives)
     : m_binDir(binDir)
     , m_port(port)
     , m_variants(variants)
+    , m_busDrives(busDrives)
 {
 }
 
@@ -45,6 +47,8 @@ QStringList MatrixCli::arguments(const QStringList& command) const
     QStringList args{QStringLiteral("--port"), m_port};
     if (!m_variants.isEmpty())
         args << QStringLiteral("--variant") << m_variants;
+    if (!m_busDrives.isEmpty())
+        args << QStringLiteral("--bus-drives") << m_busDrives;
     return args + command;
 }
 

@@ -26,7 +26,10 @@ struct CliRun
 class MatrixCli
 {
 public:
-    MatrixCli(const QString& binDir, const QString& port, const QString& variants);
+    // `busDrives`: the drives on the simulated bus (--bus-drives): a restore names the drives
+    // each write reaches.
+    MatrixCli(const QString& binDir, const QString& port, const QString& variants,
+              const QString& busDrives);
 
     CliRun run(const QStringList& command, int timeoutMs = 600000) const;
     // Runs with --trace and calls `onTrace` with the trace so far until it returns true once
@@ -43,6 +46,7 @@ private:
     QString m_binDir;
     QString m_port;
     QString m_variants;
+    QString m_busDrives;
 };
 
 } // namespace opentop::faultmatrix

@@ -41,7 +41,8 @@ MatrixSteps::MatrixSteps(const MatrixOptions& options, int seed, QTextStream& lo
     , m_link(m_dir.filePath(QStringLiteral("ttyFM")))
     , m_file(m_dir.filePath(QStringLiteral("bus.json")))
     , m_sim(options.binDir)
-    , m_cli(options.binDir, m_link, MatrixOptions::variantList(options.drives))
+    , m_cli(options.binDir, m_link, MatrixOptions::variantList(options.drives),
+            options.drives == 1 ? QStringLiteral("1") : QStringLiteral("1-%1").arg(options.drives))
     , m_random(std::mt19937::result_type(seed))
 {
     m_counts.label = QStringLiteral("seed %1").arg(seed);

@@ -70,6 +70,17 @@
     </message>
 </context>
 <context>
+    <name>opentop::BusDriveList</name>
+    <message numerus="yes">
+        <location filename="../../cli/BusDriveList.cpp" line="16"/>
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>%n day ago</numerusform>
+            <numerusform>%n days ago</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>opentop::BusLeaving</name>
     <message numerus="yes">
         <location filename="../../ui/main/BusLeaving.cpp" line="78"/>
@@ -197,7 +208,7 @@
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message numerus="yes">
-        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="94"/>
+        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="89"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 is not valid: %n problem; nothing may be run with it</numerusform>
@@ -205,7 +216,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="105"/>
+        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="100"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>; %n unit of %1 checked</numerusform>
@@ -216,7 +227,7 @@
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message numerus="yes">
-        <location filename="../../cli/EolRecipeSignCommand.cpp" line="53"/>
+        <location filename="../../cli/EolRecipeSignCommand.cpp" line="48"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>error: %1 does not pass check (%n problem); not signed</numerusform>
@@ -227,7 +238,7 @@
 <context>
     <name>opentop::EolSupport</name>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="122"/>
+        <location filename="../../cli/EolSupport.cpp" line="134"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>%n position</numerusform>
@@ -235,7 +246,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="123"/>
+        <location filename="../../cli/EolSupport.cpp" line="135"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n setting</numerusform>
@@ -243,7 +254,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="125"/>
+        <location filename="../../cli/EolSupport.cpp" line="137"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>%n per-unit value</numerusform>
@@ -251,7 +262,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="126"/>
+        <location filename="../../cli/EolSupport.cpp" line="138"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n step</numerusform>
@@ -400,7 +411,7 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="237"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>

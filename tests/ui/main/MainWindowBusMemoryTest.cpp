@@ -4,6 +4,7 @@
 #include "ui/bus/BusRecallBar.h"
 
 #include <QFile>
+#include <QProcess>
 
 using namespace opentop;
 using namespace opentop::test;
@@ -166,4 +167,34 @@ TEST_F(MainWindowBusMemoryTest, ASimulatedBusIsMarkedInTheWindowAndARealOneIsNot
     fresh.show();
     EXPECT_FALSE(fresh.simulatedBanner()->isVisible());
     EXPECT_FALSE(fresh.windowTitle().contains(QStringLiteral("SIMULATED")));
+}
+
+// One memory for both programs: a scan on the command line is what the window offers next.
+TEST_F(MainWindowBusMemoryTest, AScanOnTheCommandLineIsOfferedByTheWindow)
+{
+    // The names the real window runs under (app/gui/main.cpp): its settings file is then the
+    // one the command line uses.
+    struct Organization
+    {
+        QString before = QCoreApplication::organizationName();
+        ~Organization() { QCoreApplication::setOrganizationName(before); }
+    } organization;
+    QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP"));
+    QCoreApplication::setApplicationName(QStringLiteral("OpenTOP"));
+    const QString spec = QStringLiteral("dbu200@4,dcpid@6");
+    QProcess cli;
+    cli.start(QStringLiteral(OPENTOP_BIN_DIR "/opentop-cli"),
+              {QStringLiteral("--sim"), spec, QStringLiteral("scan"), QStringLiteral("--to"),
+               QStringLiteral("8")});
+    ASSERT_TRUE(cli.waitForFinished(30000));
+    ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+    ConnectionSettings settings = simulated();
+    settings.simSpec = spec;
+    connectAndWait(settings);
+    BusRecallBar* bar = window->recallBar();
+    ASSERT_TRUE(bar->isVisible());
+    EXPECT_TRUE(bar->text().contains(QStringLiteral("4 (")) &&
+                bar->text().contains(QStringLiteral("6 (")))
+        << qPrintable(bar->text());
+    EXPECT_EQ(bar->restoreButton()->text(), QStringLiteral("&Restore the 2 drives last seen"));
 }
