@@ -44,3 +44,39 @@ TEST_F(BusMemoryTest, DrivesAndTheirVariantsAreKeptPerConnection)
     BusMemory::forget(BusMemory::key(serial));
     EXPECT_TRUE(BusMemory::load(BusMemory::key(serial)).isEmpty());
 }
+
+// A scan of part of the bus replaces what was remembered in its range only, and the memory
+// says when it was saved (the command line says a list's age before it relies on it).
+TEST_F(BusMemoryTest, APartialScanReplacesItsRangeOnlyAndTheTimeIsKept)
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("OpenTOP-test"));
+    QSettings().clear();
+    const QString key = QStringLiteral("serial:/dev/ttyUSB1");
+    EXPECT_FALSE(BusMemory::savedAt(key).isValid());
+    const auto drive = [](int slave, const char* type) {
+        DeviceInfo info;
+        info.slave = slave;
+        info.state = DeviceInfo::State::Present;
+        info.family = QString::fromLatin1(type).left(3) == QLatin1String("dbu")
+                          ? QStringLiteral("dbu")
+                          : QStringLiteral("dcpid");
+        info.variant = QString::fromLatin1(type);
+        info.model = info.variant.toUpper();
+        return info;
+    };
+    const QDateTime before = QDateTime::currentDateTimeUtc().addSecs(-1);
+    BusMemory::update(
+        key, 1, 247,
+        BusMemory::present({drive(1, "dbu200"), drive(5, "dbu200"), drive(30, "dbu400")}));
+    ASSERT_TRUE(BusMemory::savedAt(key).isValid());
+    EXPECT_GE(BusMemory::savedAt(key), before);
+    // 1–10 scanned again: 5 is gone, 7 is new; 30 was not asked and stays.
+    BusMemory::update(key, 1, 10, BusMemory::present({drive(1, "dbu200"), drive(7, "dcpid")}));
+    QVector<int> slaves;
+    for (const BusMemory::Drive& d : BusMemory::load(key))
+        slaves << d.slave;
+    EXPECT_EQ(slaves, QVector<int>({1, 7, 30}));
+    BusMemory::forget(key);
+    EXPECT_TRUE(BusMemory::load(key).isEmpty());
+    EXPECT_FALSE(BusMemory::savedAt(key).isValid());
+}
