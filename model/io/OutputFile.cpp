@@ -41,7 +41,7 @@ bool OutputFile::write(const QString& path, const QByteArray& data, QString* err
     if (info.exists() && !info.isFile()) {
         // A device or FIFO: write through it, unbuffered so that every error is seen here.
         QFile file(path);
-        if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+        if (!file.open(QIODevice::WriteOnly))
             return fail(file.errorString());
         qint64 done = 0;
         while (done < data.size()) {
@@ -55,9 +55,12 @@ bool OutputFile::write(const QString& path, const QByteArray& data, QString* err
             return fail(file.errorString());
         return true;
     }
-    // A symbolic link to a regular file: replace the file it names, keep the link.
+    // A symbolic link to a regular file: replace the file it names, keep the link. Unbuffered:
+    // Qt 6.4's commit() misses the error of flushing a buffered write under 16 KB, so a full
+    // disk would leave an empty file renamed over the old one; written straight through, the
+    // write itself fails and the old file stays.
     QSaveFile file(info.isSymLink() ? info.canonicalFilePath() : path);
-    if (!file.open(QIODevice::WriteOnly))
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
         return fail(file.errorString());
     if (file.write(data) != data.size()) {
         const QString reason = file.errorString();

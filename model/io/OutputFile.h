@@ -9,7 +9,9 @@ namespace opentop {
 // replaced atomically: a temporary file beside it, renamed over it only when all was written.
 // Anything else that exists (a device such as /dev/stdout, a FIFO) is written through, never
 // replaced by a regular file, and every write error is reported (a full device says so).
-// A directory is refused.
+// A directory is refused. A write that fails (a full disk, a file size limit) leaves the old
+// file as it was and says why; the data is written straight through, never left in a buffer
+// whose error a commit could miss.
 class OutputFile
 {
 public:

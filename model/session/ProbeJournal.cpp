@@ -1,5 +1,7 @@
 #include "model/session/ProbeJournal.h"
 
+#include "model/io/OutputFile.h"
+
 #include "model/ModelLog.h"
 
 #include <QDir>
@@ -8,7 +10,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLockFile>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 namespace opentop {
@@ -41,13 +42,7 @@ bool writeAll(const QString& path, const QJsonObject& entries, QString* error)
         *error = ProbeJournal::tr("cannot create the folder of %1").arg(path);
         return false;
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(QJsonDocument(entries).toJson(QJsonDocument::Indented)) < 0 || !file.commit()) {
-        *error = ProbeJournal::tr("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return OutputFile::write(path, QJsonDocument(entries).toJson(QJsonDocument::Indented), error);
 }
 
 } // namespace

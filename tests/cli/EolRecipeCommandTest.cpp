@@ -3,6 +3,7 @@
 #include "cli/ExitCode.h"
 #include "model/eol/RecipeFile.h"
 #include "tests/cli/CliTestSupport.h"
+#include "tests/support/FileSizeLimit.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -360,4 +361,24 @@ TEST_F(EolRecipeCommand, WrongArgumentsAreUsageErrorsNamingTheProblem)
         EXPECT_TRUE(help.out.contains(QString::fromLatin1(sub))) << sub << qPrintable(help.out);
     EXPECT_EQ(runCli({QStringLiteral("eol"), QStringLiteral("--help")}).out, help.out);
     EXPECT_TRUE(runCli({QStringLiteral("--help")}).out.contains(QStringLiteral("eol run|recipe|")));
+}
+
+// Signing on a full disk (issue 28): refused with the reason, and the recipe is not emptied.
+TEST_F(EolRecipeCommand, SigningOnAFullDiskLeavesTheRecipeAsItWas)
+{
+    const QString recipe = exampleCopy();
+    QByteArray text = read(recipe);
+    text.replace("\"value\": 2, \"unit\": \"s\"", "\"value\": 3, \"unit\": \"s\"");
+    write(recipe, text);
+    CliRun r;
+    {
+        test::FileSizeLimit full(256);
+        ASSERT_TRUE(full.ok());
+        r = runCli(
+            {QStringLiteral("eol"), QStringLiteral("recipe"), QStringLiteral("sign"), recipe});
+    }
+    EXPECT_NE(r.code, ExitOk) << qPrintable(r.out + r.err);
+    EXPECT_FALSE(r.out.contains(QStringLiteral("signed"))) << qPrintable(r.out);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("cannot write %1").arg(recipe))) << qPrintable(r.err);
+    EXPECT_EQ(read(recipe), text);
 }

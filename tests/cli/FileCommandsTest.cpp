@@ -7,6 +7,7 @@
 #include "sim/SimBus.h"
 #include "sim/TcpSimServer.h"
 #include "tests/cli/CliTestSupport.h"
+#include "tests/support/FileSizeLimit.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -272,4 +273,32 @@ TEST_F(FileCommands, UsageErrors)
               ExitInvalid); // a DBU and a DC controller: nothing to compare
     r = runCli({QStringLiteral("help"), QStringLiteral("compare")});
     EXPECT_TRUE(r.out.contains(QStringLiteral("exit 0 whether or not they differ")));
+}
+
+// A disk that fills (issue 28): the backup is not written, says why and exits non-zero, and
+// the backup that was there stays whole.
+TEST_F(FileCommands, ABackupOnAFullDiskKeepsTheOldFileAndFails)
+{
+    const QString file = path("b.json");
+    ASSERT_EQ(runCli({QStringLiteral("--sim=dbu200@1,dcpid@7"), QStringLiteral("backup"),
+                      QStringLiteral("1"), QStringLiteral("-o"), file})
+                  .code,
+              ExitOk);
+    QFile before(file);
+    ASSERT_TRUE(before.open(QIODevice::ReadOnly));
+    const QByteArray old = before.readAll();
+    before.close();
+    CliRun r;
+    {
+        test::FileSizeLimit full(512); // smaller than any backup, larger than nothing
+        ASSERT_TRUE(full.ok());
+        r = runCli({QStringLiteral("--sim=dbu200@1,dcpid@7"), QStringLiteral("backup"),
+                    QStringLiteral("1"), QStringLiteral("7"), QStringLiteral("-o"), file});
+    }
+    EXPECT_NE(r.code, ExitOk) << qPrintable(r.out + r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("cannot write %1").arg(file))) << qPrintable(r.err);
+    EXPECT_FALSE(r.out.contains(QStringLiteral("wrote"))) << qPrintable(r.out);
+    QFile after(file);
+    ASSERT_TRUE(after.open(QIODevice::ReadOnly));
+    EXPECT_EQ(after.readAll(), old);
 }

@@ -1,8 +1,8 @@
 #include "ui/tuning/TuningRunCsv.h"
 
-#include "ui/tuning/TuningRun.h"
+#include "model/io/OutputFile.h"
 
-#include <QSaveFile>
+#include "ui/tuning/TuningRun.h"
 
 namespace opentop {
 
@@ -54,19 +54,7 @@ QString TuningRunCsv::text(const TuningRun& run, const QString& drive)
 bool TuningRunCsv::write(const QString& path, const TuningRun& run, const QString& drive,
                          QString* error)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    file.write(text(run, drive).toUtf8());
-    if (!file.commit()) {
-        if (error)
-            *error = tr("could not write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return OutputFile::write(path, text(run, drive).toUtf8(), error);
 }
 
 } // namespace opentop

@@ -6,7 +6,9 @@
 #include "model/files/BackupFile.h"
 #include "model/profile/ProfileRegistry.h"
 #include "tests/support/FifoReader.h"
+#include "tests/support/FileSizeLimit.h"
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryDir>
@@ -124,4 +126,34 @@ TEST(BackupFileSize, AFileLargerThanTheCapIsRefusedNamingTheCap)
     QString error;
     EXPECT_FALSE(BackupFile::load(path, ProfileRegistry::builtIn(), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("larger than 16 MB"))) << qPrintable(error);
+}
+
+// A disk that fills: a small file (Qt 6.4 missed the error of a buffered write under 16 KB
+// and renamed an empty file over the old one) is refused with the reason, the old file stays
+// whole, and no temporary file is left beside it.
+TEST(OutputFile, AWriteTheFileSystemRefusesKeepsTheOldFileAndSaysWhy)
+{
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("site.json"));
+    const QByteArray old = QByteArrayLiteral("{\"old\": true}\n");
+    QString error;
+    ASSERT_TRUE(OutputFile::write(path, old, &error)) << qPrintable(error);
+    for (const int size : {100, 8 * 1024, 40 * 1024}) {
+        {
+            test::FileSizeLimit limit(64);
+            ASSERT_TRUE(limit.ok());
+            error.clear();
+            EXPECT_FALSE(OutputFile::write(path, QByteArray(size, 'x'), &error)) << size;
+        }
+        EXPECT_TRUE(error.startsWith(QStringLiteral("cannot write %1: ").arg(path)))
+            << qPrintable(error);
+        QFile kept(path);
+        ASSERT_TRUE(kept.open(QIODevice::ReadOnly));
+        EXPECT_EQ(kept.readAll(), old) << "after a " << size << "-byte write";
+        EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files),
+                  QStringList{QStringLiteral("site.json")});
+    }
+    EXPECT_TRUE(OutputFile::write(path, QByteArray(8 * 1024, 'y'), &error)) << qPrintable(error);
+    EXPECT_EQ(QFileInfo(path).size(), 8 * 1024);
 }
