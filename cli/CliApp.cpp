@@ -115,6 +115,20 @@ QString CliApp::profileLanguage(const QStringList& arguments, const QString& lan
     return language.isEmpty() ? QStringLiteral("en") : language;
 }
 
+int CliApp::finishOutput(int code, QTextStream& out, QTextStream& err,
+                         const std::function<bool()>& lost)
+{
+    out.flush();
+    if (out.status() == QTextStream::Ok && !(lost && lost()))
+        return code;
+    err << tr("note: standard output could not be written (closed early, or the disk is "
+              "full): what the command printed there is lost; the work itself ran to its end "
+              "and exit status %1 says how it ended")
+               .arg(code)
+        << Qt::endl;
+    return code;
+}
+
 int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err)
 {
     const QString program = QFileInfo(arguments.value(0, QStringLiteral("opentop-cli"))).fileName();

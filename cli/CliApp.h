@@ -22,6 +22,11 @@ public:
     // True when the command line needs a QGuiApplication (offscreen) rather than a
     // QCoreApplication: drawing a certificate's PDF (eol certificate).
     static bool needsGui(const QStringList& arguments);
+    // After a command: when standard output could not all be written (a closed pipe, a full
+    // disk; `lost`: the C stream behind `out` saw a write fail), says so on `err` with what the
+    // exit code means; the work itself was not cut short. Returns `code`.
+    static int finishOutput(int code, QTextStream& out, QTextStream& err,
+                            const std::function<bool()>& lost);
     // The language of the device profiles' texts for this command line, to give
     // ProfileRegistry::setLanguage before anything loads the profiles: `language` (the program's
     // language), except "en" with --json: JSON is for programs and keeps the profiles' English

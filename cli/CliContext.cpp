@@ -72,6 +72,11 @@ void CliContext::installInterruptHandler()
     // A dropped ssh session: stop between transactions and report like Ctrl-C, never die in
     // the middle of a restore with nothing said.
     std::signal(SIGHUP, onInterrupt);
+#ifdef SIGPIPE
+    // Output piped into `head` or a `less` quit early: the pipe closing must not end a restore
+    // halfway. Writes to it fail instead (CliApp::finishOutput says so on stderr).
+    std::signal(SIGPIPE, SIG_IGN);
+#endif
 }
 
 bool CliContext::interrupted() const

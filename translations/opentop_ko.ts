@@ -2974,18 +2974,23 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="174"/>
-        <location filename="../cli/CliApp.cpp" line="228"/>
+        <location filename="../cli/CliApp.cpp" line="124"/>
+        <source>note: standard output could not be written (closed early, or the disk is full): what the command printed there is lost; the work itself ran to its end and exit status %1 says how it ended</source>
+        <translation>참고: 표준 출력에 쓸 수 없습니다(일찍 닫혔거나 디스크가 가득 참). 명령이 그곳에 출력한 내용은 손실되었습니다. 작업 자체는 끝까지 실행되었으며 종료 상태 %1이(가) 결과를 나타냅니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="188"/>
+        <location filename="../cli/CliApp.cpp" line="242"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot;를 실행해 보십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="194"/>
+        <location filename="../cli/CliApp.cpp" line="208"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 알 수 없는 명령 &quot;%2&quot;; 명령: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="202"/>
+        <location filename="../cli/CliApp.cpp" line="216"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2994,12 +2999,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="216"/>
+        <location filename="../cli/CliApp.cpp" line="230"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3은(는) 이 명령의 옵션이 아닙니다. &quot;%1 help %2&quot;를 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="227"/>
+        <location filename="../cli/CliApp.cpp" line="241"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3007,49 +3012,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="91"/>
-        <location filename="../cli/CliContext.cpp" line="105"/>
-        <location filename="../cli/CliContext.cpp" line="113"/>
+        <location filename="../cli/CliContext.cpp" line="96"/>
+        <location filename="../cli/CliContext.cpp" line="110"/>
+        <location filename="../cli/CliContext.cpp" line="118"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="118"/>
+        <location filename="../cli/CliContext.cpp" line="123"/>
         <source>serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="146"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="253"/>
+        <location filename="../cli/CliContext.cpp" line="258"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="258"/>
+        <location filename="../cli/CliContext.cpp" line="263"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="316"/>
+        <location filename="../cli/CliContext.cpp" line="321"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="320"/>
+        <location filename="../cli/CliContext.cpp" line="325"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="338"/>
+        <location filename="../cli/CliContext.cpp" line="343"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="348"/>
+        <location filename="../cli/CliContext.cpp" line="353"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -10233,23 +10238,18 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProbeJournal</name>
     <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="32"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="33"/>
         <source>%1 is not a probe journal (%2): ignored; a probe interrupted before may have left its value on a drive</source>
         <translation>%1은(는) 확인 기록 파일이 아닙니다(%2): 무시합니다. 이전에 중단된 확인이 드라이버에 값을 남겼을 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="41"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="42"/>
         <source>cannot create the folder of %1</source>
         <translation>%1의 폴더를 만들 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="47"/>
-        <source>cannot write %1: %2</source>
-        <translation>%1에 쓸 수 없습니다: %2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="83"/>
-        <location filename="../model/session/ProbeJournal.cpp" line="97"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="78"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="92"/>
         <source>%1 is locked by another program</source>
         <translation>%1을(를) 다른 프로그램이 잠그고 있습니다</translation>
     </message>
@@ -17965,14 +17965,6 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/tuning/TuningRules.cpp" line="69"/>
         <source>PI only (Ziegler–Nichols)</source>
         <translation>PI만 (Ziegler–Nichols)</translation>
-    </message>
-</context>
-<context>
-    <name>opentop::TuningRunCsv</name>
-    <message>
-        <location filename="../ui/tuning/TuningRunCsv.cpp" line="66"/>
-        <source>could not write %1: %2</source>
-        <translation>%1에 쓸 수 없습니다: %2</translation>
     </message>
 </context>
 <context>

@@ -2974,18 +2974,23 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="174"/>
-        <location filename="../cli/CliApp.cpp" line="228"/>
+        <location filename="../cli/CliApp.cpp" line="124"/>
+        <source>note: standard output could not be written (closed early, or the disk is full): what the command printed there is lost; the work itself ran to its end and exit status %1 says how it ended</source>
+        <translation>注意：無法寫入標準輸出 (提早關閉或磁碟已滿)：指令在該處輸出的內容已遺失；工作本身已執行完畢，結束狀態 %1 表示其結果</translation>
+    </message>
+    <message>
+        <location filename="../cli/CliApp.cpp" line="188"/>
+        <location filename="../cli/CliApp.cpp" line="242"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>請執行 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="194"/>
+        <location filename="../cli/CliApp.cpp" line="208"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知指令 &quot;%2&quot;；可用指令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="202"/>
+        <location filename="../cli/CliApp.cpp" line="216"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2994,12 +2999,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="216"/>
+        <location filename="../cli/CliApp.cpp" line="230"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是此指令的選項；請參閱 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="227"/>
+        <location filename="../cli/CliApp.cpp" line="241"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3007,49 +3012,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="91"/>
-        <location filename="../cli/CliContext.cpp" line="105"/>
-        <location filename="../cli/CliContext.cpp" line="113"/>
+        <location filename="../cli/CliContext.cpp" line="96"/>
+        <location filename="../cli/CliContext.cpp" line="110"/>
+        <location filename="../cli/CliContext.cpp" line="118"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="118"/>
+        <location filename="../cli/CliContext.cpp" line="123"/>
         <source>serial line: %1</source>
         <translation>序列線路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="146"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="253"/>
+        <location filename="../cli/CliContext.cpp" line="258"/>
         <source>machine number %1: no connection</source>
         <translation>機號 %1：未連線</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="258"/>
+        <location filename="../cli/CliContext.cpp" line="263"/>
         <source>machine number %1: %2%3</source>
         <translation>機號 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="316"/>
+        <location filename="../cli/CliContext.cpp" line="321"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="320"/>
+        <location filename="../cli/CliContext.cpp" line="325"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驅動器機型；請使用下列其中之一：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="338"/>
+        <location filename="../cli/CliContext.cpp" line="343"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是 1–247 的機號，也不是 3-8 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="348"/>
+        <location filename="../cli/CliContext.cpp" line="353"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
     </message>
@@ -10233,23 +10238,18 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProbeJournal</name>
     <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="32"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="33"/>
         <source>%1 is not a probe journal (%2): ignored; a probe interrupted before may have left its value on a drive</source>
         <translation>%1 不是探測記錄檔 (%2)：已忽略；先前中斷的探測可能在驅動器上留下了探測值</translation>
     </message>
     <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="41"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="42"/>
         <source>cannot create the folder of %1</source>
         <translation>無法建立 %1 的資料夾</translation>
     </message>
     <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="47"/>
-        <source>cannot write %1: %2</source>
-        <translation>無法寫入 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../model/session/ProbeJournal.cpp" line="83"/>
-        <location filename="../model/session/ProbeJournal.cpp" line="97"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="78"/>
+        <location filename="../model/session/ProbeJournal.cpp" line="92"/>
         <source>%1 is locked by another program</source>
         <translation>%1 已被其他程式鎖定</translation>
     </message>
@@ -17965,14 +17965,6 @@ then log out and in again (the group applies to new sessions only).</source>
         <location filename="../model/tuning/TuningRules.cpp" line="69"/>
         <source>PI only (Ziegler–Nichols)</source>
         <translation>僅 PI (Ziegler–Nichols)</translation>
-    </message>
-</context>
-<context>
-    <name>opentop::TuningRunCsv</name>
-    <message>
-        <location filename="../ui/tuning/TuningRunCsv.cpp" line="66"/>
-        <source>could not write %1: %2</source>
-        <translation>無法寫入 %1：%2</translation>
     </message>
 </context>
 <context>

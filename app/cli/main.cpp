@@ -46,5 +46,8 @@ int main(int argc, char* argv[])
     QTextStream out(stdout);
     QTextStream err(stderr);
     opentop::CliApp cli;
-    return cli.run(QCoreApplication::arguments(), out, err);
+    const int code = cli.run(QCoreApplication::arguments(), out, err);
+    return opentop::CliApp::finishOutput(code, out, err, [] {
+        return std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+    });
 }
