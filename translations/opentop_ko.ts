@@ -16506,7 +16506,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     <message>
         <location filename="../transport/LibmodbusContext.cpp" line="111"/>
         <location filename="../transport/RtuBackend.cpp" line="158"/>
-        <location filename="../transport/TcpBackend.cpp" line="89"/>
+        <location filename="../transport/TcpBackend.cpp" line="107"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
     </message>
@@ -16519,7 +16519,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
         <location filename="../transport/RtuBackend.cpp" line="165"/>
-        <location filename="../transport/TcpBackend.cpp" line="95"/>
+        <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
@@ -16889,7 +16889,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>가상 터미널(예: /dev/pts/3 또는 socat 링크)은 목록에 나오지 않습니다: 경로를 입력하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="105"/>
+        <location filename="../transport/TcpBackend.cpp" line="56"/>
+        <source>Cannot open %1: the name %2 was not found (%3); check the gateway&apos;s name, or give its address</source>
+        <translation>%1을(를) 열 수 없습니다: 이름 %2을(를) 찾을 수 없습니다(%3). 게이트웨이 이름을 확인하거나 주소를 입력하십시오</translation>
+    </message>
+    <message>
+        <location filename="../transport/TcpBackend.cpp" line="123"/>
         <source>MBAP length %1</source>
         <translation>MBAP 길이 %1</translation>
     </message>

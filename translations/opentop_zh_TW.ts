@@ -16506,7 +16506,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     <message>
         <location filename="../transport/LibmodbusContext.cpp" line="111"/>
         <location filename="../transport/RtuBackend.cpp" line="158"/>
-        <location filename="../transport/TcpBackend.cpp" line="89"/>
+        <location filename="../transport/TcpBackend.cpp" line="107"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
     </message>
@@ -16519,7 +16519,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
         <location filename="../transport/RtuBackend.cpp" line="165"/>
-        <location filename="../transport/TcpBackend.cpp" line="95"/>
+        <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
@@ -16889,7 +16889,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>虛擬終端機 (例如 /dev/pts/3 或 socat 連結) 不會列出：請直接輸入其路徑。</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="105"/>
+        <location filename="../transport/TcpBackend.cpp" line="56"/>
+        <source>Cannot open %1: the name %2 was not found (%3); check the gateway&apos;s name, or give its address</source>
+        <translation>無法開啟 %1：找不到名稱 %2 (%3)；請檢查閘道器的名稱，或改用其位址</translation>
+    </message>
+    <message>
+        <location filename="../transport/TcpBackend.cpp" line="123"/>
         <source>MBAP length %1</source>
         <translation>MBAP 長度 %1</translation>
     </message>

@@ -4,6 +4,8 @@
 #include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
+#include <QHostAddress>
+#include <QHostInfo>
 #include <algorithm>
 #include <arpa/inet.h>
 #include <cerrno>
@@ -41,6 +43,22 @@ _modbus* TcpBackend::createContext()
     if (inet_pton(AF_INET, host.constData(), &ipv4) == 1)
         return modbus_new_tcp(host.constData(), settings().tcpPort);
     return modbus_new_tcp_pi(host.constData(), QByteArray::number(settings().tcpPort).constData());
+}
+
+QString TcpBackend::openErrorText(int err) const
+{
+    // libmodbus reports a gateway name that does not resolve as "Connection refused", which
+    // sends people to the gateway's port instead of its name.
+    const QString host = settings().host.trimmed();
+    if (QHostAddress(host).isNull()) {
+        const QHostInfo info = QHostInfo::fromName(host);
+        if (info.error() != QHostInfo::NoError || info.addresses().isEmpty())
+            return QCoreApplication::translate("opentop::Transport",
+                                               "Cannot open %1: the name %2 was not found (%3); "
+                                               "check the gateway's name, or give its address")
+                .arg(describe(), host, info.errorString());
+    }
+    return LibmodbusBackend::openErrorText(err);
 }
 
 QByteArray TcpBackend::txAdu(const ModbusRequest& request) const

@@ -18,6 +18,7 @@ public:
 
 protected:
     _modbus* createContext() override;
+    QString openErrorText(int err) const override;
     QByteArray txAdu(const ModbusRequest& request) const override;
     QByteArray toRtuAdu(const QByteArray& received) const override;
     int receivedLength(const QByteArray& buffer) const override;

@@ -169,4 +169,21 @@ TEST(TcpBackendTest, ConnectRefused)
     QString error;
     EXPECT_FALSE(backend.open(&error));
     EXPECT_TRUE(error.contains(QString::number(port))) << error.toStdString();
+    EXPECT_FALSE(error.contains(QStringLiteral("was not found"))) << error.toStdString();
+}
+
+// A gateway name that does not resolve is said as such (libmodbus says "Connection refused",
+// which sends people to the port); a refused connection to an address stays "refused".
+TEST(TcpBackendTest, ANameThatDoesNotResolveIsSaidAsSuch)
+{
+    ConnectionSettings s;
+    s.kind = ConnectionSettings::Kind::Tcp;
+    s.host = QStringLiteral("no-such-gateway.invalid"); // RFC 2606: never resolves
+    s.tcpPort = 502;
+    TcpBackend backend(s);
+    QString error;
+    EXPECT_FALSE(backend.open(&error));
+    EXPECT_TRUE(error.contains(QStringLiteral("the name no-such-gateway.invalid was not found")))
+        << error.toStdString();
+    EXPECT_FALSE(error.contains(QStringLiteral("refused"))) << error.toStdString();
 }
