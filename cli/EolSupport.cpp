@@ -180,7 +180,9 @@ std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, in
                             "name one with --db URL")
                              .arg(url->path)
                       << Qt::endl;
-        *exitCode = ExitUsage;
+        // A database that cannot be opened, like a junk file or a server that is not there
+        // (docs/eol-results.md): exit 1.
+        *exitCode = ExitCommunication;
         return nullptr;
     }
     std::unique_ptr<ResultDatabase> db = ResultDatabase::open(*url, &error);
