@@ -62,18 +62,6 @@ bool PtySimServer::open(const QString& linkPath, QString* error)
     ::fcntl(m_master, F_SETFL, ::fcntl(m_master, F_GETFL) | O_NONBLOCK);
     if (!linkPath.isEmpty()) {
         const QFileInfo info(linkPath);
-        if (info.isSymLink() && QFileInfo::exists(info.symLinkTarget())) {
-            // The pty it names is open: another simulator serves there. Taking the link over
-            // would silently move that simulator's users to this bus. (A simulator that was
-            // killed leaves a link to a pty that no longer exists: replaced.)
-            if (error)
-                *error = tr("%1 already links to %2, a pty in use (another opentop-sim?); stop "
-                            "that simulator, or remove the link if it is gone, or choose another "
-                            "path")
-                             .arg(linkPath, info.symLinkTarget());
-            close();
-            return false;
-        }
         if (info.isSymLink()) {
             QFile::remove(linkPath);
         } else if (info.exists()) {

@@ -10798,22 +10798,17 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>疑似端末を開けません: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="70"/>
-        <source>%1 already links to %2, a pty in use (another opentop-sim?); stop that simulator, or remove the link if it is gone, or choose another path</source>
-        <translation>%1 はすでに使用中の pty %2 にリンクしています（別の opentop-sim？）。そのシミュレータを停止するか、もう無ければリンクを削除するか、別のパスを選んでください</translation>
-    </message>
-    <message>
-        <location filename="../sim/PtySimServer.cpp" line="81"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 は既に存在し、シンボリックリンクではありません。置き換えません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="87"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>シンボリックリンク %1 -&gt; %2 を作成できません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="129"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>ポートを接続しました: %1</translation>
     </message>

@@ -10798,22 +10798,17 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>가상 터미널을 열 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="70"/>
-        <source>%1 already links to %2, a pty in use (another opentop-sim?); stop that simulator, or remove the link if it is gone, or choose another path</source>
-        <translation>%1은(는) 이미 사용 중인 pty %2에 연결되어 있습니다(다른 opentop-sim?). 그 시뮬레이터를 중지하거나, 없어졌다면 링크를 삭제하거나, 다른 경로를 선택하십시오</translation>
-    </message>
-    <message>
-        <location filename="../sim/PtySimServer.cpp" line="81"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1이(가) 이미 있고 심볼릭 링크가 아닙니다. 교체하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="87"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>심볼릭 링크 %1 -&gt; %2을(를) 만들 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="129"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>포트가 연결되었습니다: %1</translation>
     </message>

@@ -10798,22 +10798,17 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>无法打开伪终端：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="70"/>
-        <source>%1 already links to %2, a pty in use (another opentop-sim?); stop that simulator, or remove the link if it is gone, or choose another path</source>
-        <translation>%1 已链接到正在使用的 pty %2（另一个 opentop-sim？）；请停止该模拟器，若它已不在请删除此链接，或改用其他路径</translation>
-    </message>
-    <message>
-        <location filename="../sim/PtySimServer.cpp" line="81"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符号链接；拒绝替换</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="87"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>无法创建符号链接 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="129"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>端口已插入：%1</translation>
     </message>

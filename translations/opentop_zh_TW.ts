@@ -10798,22 +10798,17 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="70"/>
-        <source>%1 already links to %2, a pty in use (another opentop-sim?); stop that simulator, or remove the link if it is gone, or choose another path</source>
-        <translation>%1 已連結到使用中的 pty %2 (另一個 opentop-sim？)；請停止該模擬器，若它已不在請移除此連結，或改用其他路徑</translation>
-    </message>
-    <message>
-        <location filename="../sim/PtySimServer.cpp" line="81"/>
+        <location filename="../sim/PtySimServer.cpp" line="69"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符號連結；拒絕取代</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="87"/>
+        <location filename="../sim/PtySimServer.cpp" line="75"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>無法建立符號連結 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="129"/>
+        <location filename="../sim/PtySimServer.cpp" line="117"/>
         <source>the port is plugged in: %1</source>
         <translation>連接埠已接上：%1</translation>
     </message>

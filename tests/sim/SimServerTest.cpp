@@ -142,27 +142,6 @@ TEST_F(PtyServer, SymlinkCreatedAndRemoved)
     EXPECT_TRUE(error.contains(QStringLiteral("not a symlink"))) << error.toStdString();
 }
 
-// Two simulators on one link: the second refuses instead of taking the first one's users; a
-// link left by a simulator that is gone (its pty no longer exists) is taken over.
-TEST_F(PtyServer, ALinkToAPtyInUseIsNotTakenOver)
-{
-    QTemporaryDir dir;
-    const QString link = dir.filePath(QStringLiteral("ttySIM"));
-    start(false, link);
-    const QString first = server->slavePath();
-    PtySimServer second(bus, WireTiming(), false);
-    QString error;
-    EXPECT_FALSE(second.open(link, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("a pty in use"))) << error.toStdString();
-    EXPECT_EQ(QFileInfo(link).symLinkTarget(), first);
-
-    ASSERT_TRUE(QFile::remove(link));
-    ASSERT_TRUE(QFile::link(dir.filePath(QStringLiteral("gone")), link)); // a stale link
-    ASSERT_TRUE(second.open(link, &error)) << error.toStdString();
-    EXPECT_EQ(QFileInfo(link).symLinkTarget(), second.slavePath());
-    second.close();
-}
-
 TEST(TcpSimServerTest, ServesMbapToSeveralClients)
 {
     QString error;
