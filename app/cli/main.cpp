@@ -47,7 +47,6 @@ int main(int argc, char* argv[])
     QTextStream err(stderr);
     opentop::CliApp cli;
     const int code = cli.run(QCoreApplication::arguments(), out, err);
-    return opentop::CliApp::finishOutput(code, out, err, [] {
-        return std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
-    });
+    return opentop::CliApp::finishOutput(
+        code, out, err, [] { return std::fflush(stdout) != 0 || std::ferror(stdout) != 0; });
 }

@@ -11,8 +11,8 @@ namespace opentop {
 // What a step response shows, measured from the samples after a set point change `from` →
 // `to` at t = 0 (TuningSample::tMs): rise time 10–90 % of the step, overshoot beyond `to` in
 // percent of the step, settling time into and staying within ±2 % of the step (for at least
-// 15 % of the record, so a swing through the band as the record ends is not "settled"), steady-state
-// error (mean of the last quarter of the record minus `to`) and peak current.
+// 15 % of the record, so a swing through the band as the record ends is not "settled"),
+// steady-state error (mean of the last quarter of the record minus `to`) and peak current.
 struct StepMetrics
 {
     Q_DECLARE_TR_FUNCTIONS(opentop::StepMetrics)
