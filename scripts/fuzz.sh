@@ -12,7 +12,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${OPENTOP_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${1:-60}"
 shift || true
-all=(FuzzBackupFile FuzzProfileLoader FuzzRtuReply FuzzCliValues FuzzTrafficLog FuzzRecipeFile)
+all=(FuzzBackupFile FuzzProfileLoader FuzzRtuReply FuzzCliValues FuzzTrafficLog FuzzRecipeFile
+    FuzzSimTcpFraming FuzzUnitValuesCsv)
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=("${all[@]}")
 jobs="$(nproc 2>/dev/null || echo 2)"
@@ -46,7 +47,8 @@ fi
 cmake --build "$build" -j "$jobs" --target "${harnesses[@]}"
 
 declare -A corpus=([FuzzBackupFile]=backup [FuzzProfileLoader]=profile [FuzzRtuReply]=rtu
-    [FuzzCliValues]=cli [FuzzTrafficLog]=traffic [FuzzRecipeFile]=recipe)
+    [FuzzCliValues]=cli [FuzzTrafficLog]=traffic [FuzzRecipeFile]=recipe [FuzzSimTcpFraming]=tcp
+    [FuzzUnitValuesCsv]=unitcsv)
 # dbu.json (95 KB) is longer than -max_len and would only be read cut; its reduced copy is in
 # tests/fuzz/corpus/profile/ (made by tests/fuzz/reduce-profile.py)
 declare -A seeds=([FuzzProfileLoader]="$root/model/profiles/dcpid.json")

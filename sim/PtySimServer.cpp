@@ -9,6 +9,7 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
+#include <QLockFile>
 #include <QPointer>
 #include <QSocketNotifier>
 #include <cerrno>
@@ -46,12 +47,23 @@ PtySimServer::~PtySimServer()
 
 bool PtySimServer::open(const QString& linkPath, QString* error)
 {
+    m_linkHolderPid = 0;
+    // On replug the link is locked already.
+    const bool lockNow = !linkPath.isEmpty() && !m_linkLock;
+    if (lockNow && !lockLink(linkPath, error))
+        return false;
+    auto fail = [&](const QString& message) {
+        if (error)
+            *error = message;
+        closePty();
+        if (lockNow)
+            m_linkLock.reset();
+        return false;
+    };
     char name[256] = {};
     if (::openpty(&m_master, &m_slave, name, nullptr, nullptr) != 0) {
-        if (error)
-            *error = tr("cannot open a pseudo-terminal: %1")
-                         .arg(QString::fromLocal8Bit(strerror(errno)));
-        return false;
+        return fail(
+            tr("cannot open a pseudo-terminal: %1").arg(QString::fromLocal8Bit(strerror(errno))));
     }
     m_slavePath = QString::fromLocal8Bit(name);
     termios tio = {};
@@ -63,19 +75,12 @@ bool PtySimServer::open(const QString& linkPath, QString* error)
     if (!linkPath.isEmpty()) {
         const QFileInfo info(linkPath);
         if (info.isSymLink()) {
-            QFile::remove(linkPath);
+            QFile::remove(linkPath); // left by a simulator that is gone: we hold its lock
         } else if (info.exists()) {
-            if (error)
-                *error = tr("%1 exists and is not a symlink; refusing to replace it").arg(linkPath);
-            close();
-            return false;
+            return fail(tr("%1 exists and is not a symlink; refusing to replace it").arg(linkPath));
         }
-        if (!QFile::link(m_slavePath, linkPath)) {
-            if (error)
-                *error = tr("cannot create the symlink %1 -> %2").arg(linkPath, m_slavePath);
-            close();
-            return false;
-        }
+        if (!QFile::link(m_slavePath, linkPath))
+            return fail(tr("cannot create the symlink %1 -> %2").arg(linkPath, m_slavePath));
         m_linkPath = linkPath;
     }
     m_notifier = new QSocketNotifier(m_master, QSocketNotifier::Read, this);
@@ -84,7 +89,47 @@ bool PtySimServer::open(const QString& linkPath, QString* error)
     return true;
 }
 
+bool PtySimServer::lockLink(const QString& linkPath, QString* error)
+{
+    auto lock = std::make_unique<QLockFile>(linkPath + QStringLiteral(".lock"));
+    // Held as long as the simulator runs, so never stale by age; stale only when the PID it
+    // names no longer runs (a killed simulator), and then tryLock() removes it and takes over.
+    lock->setStaleLockTime(0);
+    int why = EEXIST;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        if (lock->tryLock(0)) {
+            m_linkLock = std::move(lock);
+            return true;
+        }
+        why = errno; // of the failed open() when the file cannot be created
+        if (lock->error() != QLockFile::LockFailedError)
+            break;
+        why = EEXIST;
+        qint64 pid = 0;
+        if (lock->getLockInfo(&pid, nullptr, nullptr)) {
+            m_linkHolderPid = pid;
+            if (error)
+                *error = tr("%1 is in use by another simulator (PID %2); stop it first, or "
+                            "choose another path for --pty")
+                             .arg(linkPath)
+                             .arg(pid);
+            return false;
+        }
+        // The holder let go between the two looks: try once more.
+    }
+    if (error)
+        *error = tr("cannot create the lock file %1: %2")
+                     .arg(lock->fileName(), QString::fromLocal8Bit(strerror(why)));
+    return false;
+}
+
 void PtySimServer::close()
+{
+    closePty();
+    m_linkLock.reset(); // unlocks: removes <link>.lock
+}
+
+void PtySimServer::closePty()
 {
     delete m_notifier;
     m_notifier = nullptr;
@@ -106,7 +151,7 @@ void PtySimServer::unplug()
     m_unpluggedLink = m_linkPath;
     m_silence.stop();
     m_buffer.clear();
-    close();
+    closePty(); // the link stays locked: this simulator plugs it in again
     qCInfo(lcSim) << "unplugged";
 }
 

@@ -8,6 +8,7 @@
 #include <QTimer>
 #include <memory>
 
+class QLockFile;
 class QSocketNotifier;
 
 namespace opentop {
@@ -26,9 +27,13 @@ public:
     ~PtySimServer() override;
 
     // Opens the pty; with a linkPath, also a symlink to the slave (an existing symlink is
-    // replaced, any other file is refused).
+    // replaced, any other file is refused). The link is locked first (QLockFile "<link>.lock",
+    // held until close()): while another live simulator holds it, open() refuses naming its
+    // PID (linkHolderPid()); a lock left by a simulator that is gone is taken over.
     bool open(const QString& linkPath, QString* error);
     void close();
+    // The PID of the simulator that holds the link, when the last open() was refused for it.
+    qint64 linkHolderPid() const { return m_linkHolderPid; }
     // The adapter pulled out: the pty is closed under its client (reads and writes fail) and
     // the symlink removed, as /dev/ttyUSB0 vanishes. The devices keep their state.
     void unplug();
@@ -52,6 +57,8 @@ public:
     static int requestLength(const QByteArray& buffer);
 
 private:
+    bool lockLink(const QString& linkPath, QString* error);
+    void closePty(); // close() but the link stays locked (unplugged)
     void onReadable();
     void onSilence();
     void processBuffer();
@@ -69,6 +76,8 @@ private:
     QString m_slavePath;
     QString m_linkPath;
     QString m_unpluggedLink; // the symlink to restore on replug
+    std::unique_ptr<QLockFile> m_linkLock;
+    qint64 m_linkHolderPid = 0;
     QSocketNotifier* m_notifier = nullptr;
     QByteArray m_buffer;
     LineFormat m_frameLine; // the client's format as the frame in m_buffer began

@@ -154,7 +154,8 @@ int SimApp::start(const QStringList& arguments)
         m_pty->setHalfDuplex(m_options.halfDuplex);
         if (!m_pty->open(m_options.ptyLink, &error)) {
             printErr(QStringLiteral("opentop-sim: ") + error);
-            return 1;
+            // a link another simulator serves is a usage error, as bad arguments are
+            return m_pty->linkHolderPid() > 0 ? 2 : 1;
         }
         printOut(QStringLiteral("pty: ") + m_pty->slavePath());
     }

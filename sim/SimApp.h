@@ -15,7 +15,7 @@ class SimConsole;
 class TcpSimServer;
 
 // opentop-sim: options, the bus, its servers, the stdin console and clean shutdown on
-// SIGINT/SIGTERM/quit (exit 0, the pty symlink removed).
+// SIGINT/SIGTERM/quit (exit 0, the pty symlink and its lock removed).
 class SimApp : public QObject
 {
     Q_OBJECT
@@ -24,8 +24,8 @@ public:
     ~SimApp() override;
 
     // Sets everything up from the command line (with the program name first). Returns an exit
-    // code when the program should end at once (--help: 0, bad arguments: 2, failure: 1), or
-    // -1 when the event loop should run.
+    // code when the program should end at once (--help: 0, bad arguments or a --pty link
+    // another simulator serves: 2, failure: 1), or -1 when the event loop should run.
     int start(const QStringList& arguments);
     void shutdown();
 

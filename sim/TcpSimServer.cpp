@@ -12,17 +12,6 @@
 
 namespace opentop {
 
-namespace {
-
-constexpr int kMbapHeader = 7; // transaction(2) protocol(2) length(2) unit(1)
-
-quint16 word(const QByteArray& bytes, int at)
-{
-    return quint16((quint8(bytes.at(at)) << 8) | quint8(bytes.at(at + 1)));
-}
-
-} // namespace
-
 TcpSimServer::TcpSimServer(std::shared_ptr<SimBus> bus, const WireTiming& timing, bool wireTiming,
                            QObject* parent)
     : QObject(parent)
@@ -57,9 +46,9 @@ bool TcpSimServer::listen(const QHostAddress& address, quint16 port, QString* er
 void TcpSimServer::close()
 {
     m_server->close();
-    for (QTcpSocket* socket : m_buffers.keys())
+    for (QTcpSocket* socket : m_readers.keys())
         socket->abort();
-    m_buffers.clear();
+    m_readers.clear();
 }
 
 QHostAddress TcpSimServer::address() const
@@ -75,10 +64,10 @@ quint16 TcpSimServer::port() const
 void TcpSimServer::onNewConnection()
 {
     while (QTcpSocket* socket = m_server->nextPendingConnection()) {
-        m_buffers.insert(socket, QByteArray());
+        m_readers.insert(socket, TcpFrameReader());
         connect(socket, &QTcpSocket::readyRead, this, [this, socket] { onReadyRead(socket); });
         connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
-            m_buffers.remove(socket);
+            m_readers.remove(socket);
             socket->deleteLater();
         });
     }
@@ -86,32 +75,25 @@ void TcpSimServer::onNewConnection()
 
 void TcpSimServer::onReadyRead(QTcpSocket* socket)
 {
-    QByteArray& buffer = m_buffers[socket];
-    buffer.append(socket->readAll());
-    while (buffer.size() >= kMbapHeader) {
-        const quint16 length = word(buffer, 4);
-        if (word(buffer, 2) != 0 || length < 2 || length > 254) {
+    TcpFrameReader& reader = m_readers[socket];
+    reader.append(socket->readAll());
+    TcpFrameReader::Frame request;
+    for (;;) {
+        const TcpFrameReader::Status status = reader.next(&request);
+        if (status == TcpFrameReader::Status::NeedMore)
+            return;
+        if (status == TcpFrameReader::Status::Invalid) {
             qCWarning(lcSim) << "tcp: not a Modbus TCP frame, closing the connection";
-            buffer.clear();
             socket->disconnectFromHost();
             return;
         }
-        if (buffer.size() < 6 + length)
-            return;
-        const QByteArray header = buffer.left(6);
-        const QByteArray unitAndPdu = buffer.mid(6, length);
-        buffer.remove(0, 6 + length);
-
-        const QByteArray adu = ModbusCrc::append(unitAndPdu);
+        const QByteArray adu = ModbusCrc::append(request.unitAndPdu);
         const SimOutcome outcome = m_bus->handleFrame(adu);
         // A gateway checks the line's CRC: a corrupted reply becomes no reply.
         if (outcome.reply.size() < 4 || !ModbusCrc::check(outcome.reply))
             continue;
-        const QByteArray replyPdu = outcome.reply.left(outcome.reply.size() - 2);
-        QByteArray frame = header.left(4);
-        frame.append(char(replyPdu.size() >> 8));
-        frame.append(char(replyPdu.size() & 0xFF));
-        frame.append(replyPdu);
+        const QByteArray frame = TcpFrameReader::replyFrame(
+            request.header, outcome.reply.left(outcome.reply.size() - 2));
         double delay = outcome.delayMs;
         if (m_wireTiming)
             delay += m_timing.replyDelayMs(adu.size(), outcome.reply.size());

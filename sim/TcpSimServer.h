@@ -1,5 +1,6 @@
 #pragma once
 
+#include "sim/TcpFrameReader.h"
 #include "sim/WireTiming.h"
 
 #include <QHash>
@@ -38,7 +39,7 @@ private:
     WireTiming m_timing;
     bool m_wireTiming;
     QTcpServer* m_server;
-    QHash<QTcpSocket*, QByteArray> m_buffers;
+    QHash<QTcpSocket*, TcpFrameReader> m_readers;
 };
 
 } // namespace opentop
