@@ -1,13 +1,17 @@
 #include "cli/MonitorCommand.h"
 
 #include "cli/CliContext.h"
+#include "cli/MonitorCsv.h"
 #include "cli/MonitorOutput.h"
+#include "model/bus/BusMemory.h"
+#include "model/bus/LinkRecovery.h"
 #include "model/monitor/DeviceMonitor.h"
 #include "model/session/DeviceSession.h"
+#include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
-#include <QFile>
 #include <QJsonDocument>
+#include <algorithm>
 #include <memory>
 
 namespace opentop {
@@ -21,6 +25,12 @@ QString tr(const char* text)
 
 constexpr int kMinInterval = 50;
 constexpr int kMaxInterval = 60000;
+constexpr double kMaxGiveUpSeconds = 86400;
+
+QString seconds(qint64 ms)
+{
+    return QString::number(double(ms) / 1000.0, 'f', 1);
+}
 
 // One monitored drive.
 struct Watched
@@ -47,8 +57,14 @@ QList<QCommandLineOption> MonitorCommand::options() const
          tr("MS")},
         {QStringLiteral("count"), tr("Stop after N samples per drive (default: until Ctrl-C)."),
          tr("N")},
-        {QStringLiteral("csv"), tr("Also write every sample to FILE (CSV with a header)."),
+        {QStringLiteral("csv"),
+         tr("Also write every sample to FILE (CSV with a header; a row with a note where the "
+            "link was lost and where it came back)."),
          tr("FILE")},
+        {QStringLiteral("give-up"),
+         tr("When the link to the bus is lost, exit 1 if it is not back within SECONDS "
+            "(default: reconnect by itself, 0.5 s to 5 s apart, until Ctrl-C)."),
+         tr("SECONDS")},
     };
 }
 
@@ -89,12 +105,24 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
             return ExitUsage;
         }
     }
-    QFile csv;
-    if (parser.isSet(QStringLiteral("csv"))) {
-        csv.setFileName(parser.value(QStringLiteral("csv")));
-        if (!csv.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-            err << tr("error: cannot write %1: %2").arg(csv.fileName(), csv.errorString())
+    qint64 giveUpMs = 0; // 0: reconnect until Ctrl-C
+    if (parser.isSet(QStringLiteral("give-up"))) {
+        bool ok = false;
+        const double value = parser.value(QStringLiteral("give-up")).toDouble(&ok);
+        if (!ok || !(value > 0) || value > kMaxGiveUpSeconds) {
+            err << tr("error: --give-up must be a number of seconds, more than 0 and at most "
+                      "%1, got \"%2\"")
+                       .arg(kMaxGiveUpSeconds)
+                       .arg(parser.value(QStringLiteral("give-up")))
                 << Qt::endl;
+            return ExitUsage;
+        }
+        giveUpMs = std::max<qint64>(1, qint64(value * 1000));
+    }
+    MonitorCsv csv;
+    if (parser.isSet(QStringLiteral("csv"))) {
+        if (!csv.open(parser.value(QStringLiteral("csv")), &error)) {
+            err << tr("error: cannot write %1: %2").arg(csv.fileName(), error) << Qt::endl;
             return ExitInvalid;
         }
     }
@@ -130,20 +158,11 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
         w.output = std::make_unique<MonitorOutput>(*w.monitor);
     }
 
-    QTextStream csvOut(&csv);
-    QStringList csvKeys;
     if (csv.isOpen()) {
-        for (const Watched& w : watched) {
-            for (const MonitorOutput::Column& c : w.output->columns()) {
-                if (!csvKeys.contains(c.key))
-                    csvKeys << c.key;
-            }
-        }
-        QStringList header{QStringLiteral("timestamp"), QStringLiteral("slave"),
-                           QStringLiteral("family")};
-        for (const QString& k : csvKeys)
-            header << MonitorOutput::csvEscape(k);
-        csvOut << header.join(QLatin1Char(',')) << '\n';
+        std::vector<const MonitorOutput*> outputs;
+        for (const Watched& w : watched)
+            outputs.push_back(w.output.get());
+        csv.writeHeader(outputs); // a failure shows at the first sample's row
     }
     QTextStream& out = context.out();
     if (!context.json()) {
@@ -159,7 +178,25 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
 
     int errors = 0;
     bool csvFailed = false;
+    bool gaveUp = false;
     std::function<void()> finishAll;
+    auto stopAll = [&] {
+        for (Watched& x : watched)
+            x.monitor->stop();
+        if (finishAll)
+            finishAll();
+    };
+    // A full disk or device: say so and stop, never keep "recording".
+    auto csvWritten = [&](bool ok) {
+        if (ok || csvFailed)
+            return ok;
+        csvFailed = true;
+        err << tr("error: cannot write %1: %2; monitoring stopped")
+                   .arg(csv.fileName(), csv.errorString())
+            << Qt::endl;
+        stopAll();
+        return false;
+    };
     auto countPoll = [&](Watched& w) {
         ++w.polls;
         if (count == 0)
@@ -172,6 +209,63 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
         if (all && finishAll)
             finishAll();
     };
+
+    // A lost port is said once and opened again by itself; nothing is polled meanwhile, so
+    // nothing is printed every interval. Once it is back the drives are polled again.
+    const QString place = BusMemory::placeText(context.settings());
+    LinkRecovery recovery(context.client());
+    recovery.setGiveUpMs(giveUpMs);
+    auto linkJson = [&](const QDateTime& at, const QString& link, QJsonObject o) {
+        if (!context.json())
+            return;
+        o.insert(QStringLiteral("timestamp"), MonitorOutput::isoTime(at));
+        o.insert(QStringLiteral("link"), link);
+        o.insert(QStringLiteral("port"), place);
+        out << QJsonDocument(o).toJson(QJsonDocument::Compact) << '\n';
+        out.flush();
+    };
+    QObject::connect(
+        &recovery, &LinkRecovery::lost, &context, [&](const QDateTime& at, const QString& why) {
+            for (Watched& w : watched)
+                w.monitor->stop(); // the poll under way is dropped: its error is this one
+            const QString time = MonitorOutput::isoTime(at);
+            if (giveUpMs > 0)
+                err << tr("%1 link lost: %2 (%3); reconnecting for up to %4 s (Ctrl-C ends)")
+                           .arg(time, place, why, seconds(giveUpMs))
+                    << Qt::endl;
+            else
+                err << tr("%1 link lost: %2 (%3); reconnecting until it is back (Ctrl-C ends)")
+                           .arg(time, place, why)
+                    << Qt::endl;
+            linkJson(at, QStringLiteral("lost"), {{QStringLiteral("error"), why}});
+            if (csv.isOpen())
+                csvWritten(csv.writeNote(at, MonitorCsv::linkLostNote()));
+        });
+    QObject::connect(&recovery, &LinkRecovery::back, &context, [&](qint64 lostMs) {
+        const QDateTime now = QDateTime::currentDateTime();
+        err << tr("%1 link back after %2 s: %3; monitoring goes on")
+                   .arg(MonitorOutput::isoTime(now), seconds(lostMs), place)
+            << Qt::endl;
+        linkJson(now, QStringLiteral("back"),
+                 {{QStringLiteral("lostSeconds"), double(lostMs) / 1000.0}});
+        if (csv.isOpen() && !csvWritten(csv.writeNote(now, MonitorCsv::linkBackNote())))
+            return;
+        for (Watched& w : watched) {
+            if (count == 0 || w.polls < count)
+                w.monitor->start();
+        }
+    });
+    QObject::connect(
+        &recovery, &LinkRecovery::gaveUp, &context, [&](qint64 lostMs, const QString& why) {
+            gaveUp = true;
+            err << tr("error: the link to %1 was lost at %2 and is not back after %3 s "
+                      "(--give-up %4): %5; monitoring stopped")
+                       .arg(place, recovery.lostAt().toString(QStringLiteral("HH:mm:ss")),
+                            seconds(lostMs), parser.value(QStringLiteral("give-up")), why)
+                << Qt::endl;
+            stopAll();
+        });
+
     for (Watched& w : watched) {
         Watched* wp = &w;
         QObject::connect(
@@ -183,37 +277,19 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
                 else
                     out << wp->output->line(s) << '\n';
                 out.flush();
-                if (csv.isOpen()) {
-                    const QStringList cells = wp->output->csvCells(s);
-                    QStringList row{MonitorOutput::isoTime(s.timestamp), QString::number(s.slave),
-                                    wp->output->family()};
-                    for (const QString& key : csvKeys) {
-                        int column = -1;
-                        for (int i = 0; i < wp->output->columns().size(); ++i)
-                            column = wp->output->columns()[i].key == key ? i : column;
-                        row << MonitorOutput::csvEscape(column >= 0 ? cells.value(column)
-                                                                    : QString());
-                    }
-                    csvOut << row.join(QLatin1Char(',')) << '\n';
-                    csvOut.flush();
-                    if (!csvFailed && (csvOut.status() != QTextStream::Ok ||
-                                       csv.error() != QFileDevice::NoError)) {
-                        // A full disk or device: say so and stop, never keep "recording".
-                        csvFailed = true;
-                        err << tr("error: cannot write %1: %2; monitoring stopped")
-                                   .arg(csv.fileName(), csv.errorString())
-                            << Qt::endl;
-                        for (Watched& x : watched)
-                            x.monitor->stop();
-                        if (finishAll)
-                            finishAll();
-                        return;
-                    }
-                }
+                if (csv.isOpen() && !csvWritten(csv.writeSample(*wp->output, s)))
+                    return;
                 countPoll(*wp);
             });
         QObject::connect(
             w.monitor.get(), &DeviceMonitor::error, &context, [&, wp](const QString& text) {
+                if (recovery.isLost())
+                    return; // said once when it was lost
+                if (!context.client()->isOpen()) {
+                    // Lost before it was watched (while the display settings were read).
+                    recovery.markLost(text);
+                    return;
+                }
                 ++errors;
                 const QString time = MonitorOutput::isoTime(QDateTime::currentDateTime());
                 if (context.json())
@@ -235,12 +311,15 @@ int MonitorCommand::run(CliContext& context, const QStringList& args)
             w.monitor->start();
     });
     finishAll = nullptr;
+    recovery.stop();
     for (Watched& w : watched)
         w.monitor->stop();
     out.flush();
     Q_UNUSED(completed) // Ctrl-C is the normal end without --count (exit 130 by CliApp)
     if (csvFailed)
         return ExitUsage; // as a backup file that cannot be written
+    if (gaveUp)
+        return ExitCommunication;
     return errors > 0 ? ExitCommunication : ExitOk;
 }
 
