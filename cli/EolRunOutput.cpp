@@ -4,6 +4,7 @@
 #include "model/eol/EolRun.h"
 #include "model/eol/Recipe.h"
 #include "model/eol/UnitRecord.h"
+#include "model/io/DisplayText.h"
 #include "transport/ModbusClient.h"
 
 #include <QCoreApplication>
@@ -50,6 +51,18 @@ QString limitsText(const Measurement& m)
     return QString();
 }
 
+// The verdict as the line on standard output says it: with where its record is when that is
+// not the results database, so a PASS is never read without its record.
+QString verdictText(const EolRun& run, const UnitRecord& record)
+{
+    const QString verdict = unitStatusName(record.status).toUpper();
+    if (!run.storeError().isEmpty())
+        return tr("NOT RECORDED (%1)").arg(verdict);
+    if (run.spooled())
+        return tr("%1 (kept on this station)").arg(verdict);
+    return verdict;
+}
+
 void jsonLine(CliContext& context, QJsonObject object)
 {
     context.out() << QJsonDocument(object).toJson(QJsonDocument::Compact) << '\n';
@@ -82,7 +95,8 @@ void EolRunOutput::follow(CliContext& context, EolRun* eol, ModbusClient* client
                          // and verdict, for scripts.
                          QTextStream& err = cli->err();
                          err << QStringLiteral("[%1 s] %2: %3\n")
-                                    .arg(seconds(*eol), tr("drive %1").arg(machineNumber), text);
+                                    .arg(seconds(*eol), tr("drive %1").arg(machineNumber),
+                                         DisplayText::escaped(text));
                          err.flush();
                      });
     QObject::connect(eol, &EolRun::measured, eol, [=](const Measurement& m) {
@@ -104,11 +118,14 @@ void EolRunOutput::follow(CliContext& context, EolRun* eol, ModbusClient* client
         const QString limits = limitsText(m);
         QTextStream& out = cli->out();
         out << QStringLiteral("[%1 s] %2: %3 = %4 %5\n")
-                   .arg(seconds(*eol), tr("drive %1").arg(m.machineNumber), m.quantity,
-                        QStringLiteral("%1 %2")
-                            .arg(QString::number(m.value, 'g', 6), m.unit)
-                            .trimmed(),
-                        (limits.isEmpty() ? QString() : QStringLiteral("(%1) ").arg(limits)) +
+                   .arg(seconds(*eol), tr("drive %1").arg(m.machineNumber),
+                        DisplayText::escaped(m.quantity),
+                        DisplayText::escaped(QStringLiteral("%1 %2")
+                                                 .arg(QString::number(m.value, 'g', 6), m.unit)
+                                                 .trimmed()),
+                        (limits.isEmpty()
+                             ? QString()
+                             : QStringLiteral("(%1) ").arg(DisplayText::escaped(limits))) +
                             (m.pass ? tr("ok") : tr("FAIL")));
         out.flush();
     });
@@ -124,7 +141,6 @@ void EolRunOutput::verdict(CliContext& context, const EolRun& run, const UnitRec
     QTextStream& err = context.err();
     const bool json = context.json();
     QTextStream& out = context.out();
-    const QString verdict = unitStatusName(record.status).toUpper();
     if (json) {
         QJsonObject o{{QStringLiteral("event"), QStringLiteral("result")},
                       {QStringLiteral("serial"), record.serial},
@@ -136,30 +152,36 @@ void EolRunOutput::verdict(CliContext& context, const EolRun& run, const UnitRec
                       {QStringLiteral("attempt"), record.attempt}};
         if (!record.failureReason.isEmpty())
             o.insert(QStringLiteral("reason"), record.failureReason);
+        if (!run.storeError().isEmpty())
+            o.insert(QStringLiteral("recordError"), run.storeError());
         if (!run.unconfirmedStops().isEmpty())
             o.insert(QStringLiteral("notConfirmedStopped"),
                      QJsonValue::fromVariant(run.unconfirmedStops()));
         jsonLine(context, o);
     } else {
         out << QStringLiteral("%1  %2  %3 %4  %5 s%6\n")
-                   .arg(record.serial, verdict, recipe.product, tr("rev. %1").arg(recipe.revision),
-                        seconds(run),
+                   .arg(DisplayText::escaped(record.serial), verdictText(run, record),
+                        DisplayText::escaped(recipe.product),
+                        tr("rev. %1").arg(DisplayText::escaped(recipe.revision)), seconds(run),
                         record.attempt > 1
                             ? QStringLiteral("  ") + tr("attempt %1").arg(record.attempt)
                             : QString());
         if (!record.failureReason.isEmpty())
-            out << record.failureReason << '\n';
+            out << DisplayText::escapedLines(record.failureReason) << '\n';
         out.flush();
     }
     if (!run.storeError().isEmpty())
-        err << tr("the result was NOT recorded: %1").arg(run.storeError()) << Qt::endl;
+        err << tr("the result was NOT recorded: %1")
+                   .arg(DisplayText::escapedLines(run.storeError()))
+            << Qt::endl;
     else if (run.spooled())
         err << tr("the results database did not answer: the result is kept on this station "
                   "(%1) and sent when a station program next reaches the database")
                    .arg(QDir::toNativeSeparators(spoolPath))
             << Qt::endl;
     for (const QString& drive : run.unconfirmedStops())
-        err << tr("WARNING: motor not confirmed stopped: %1").arg(drive) << Qt::endl;
+        err << tr("WARNING: motor not confirmed stopped: %1").arg(DisplayText::escaped(drive))
+            << Qt::endl;
 }
 
 } // namespace opentop
