@@ -66,6 +66,26 @@ void LateReplyWatch::suspect(quint8 slave, double nowMs, int timeoutMs)
     m_suspects.append(Entry{slave, {untilMs, 0}});
 }
 
+void LateReplyWatch::suspectUntil(quint8 slave, double untilMs)
+{
+    for (Entry& e : m_suspects) {
+        if (e.slave == slave) {
+            e.wait.untilMs = std::max(e.wait.untilMs, untilMs);
+            return;
+        }
+    }
+    m_suspects.append(Entry{slave, {untilMs, 0}});
+}
+
+QVector<LateReplyWatch::Suspect> LateReplyWatch::suspects(double nowMs)
+{
+    forgetOver(&m_suspects, nowMs);
+    QVector<Suspect> left;
+    for (const Entry& e : m_suspects)
+        left.append(Suspect{e.slave, e.wait.untilMs});
+    return left;
+}
+
 bool LateReplyWatch::isSuspect(quint8 slave, double nowMs)
 {
     // A slave answers its requests in order, so the previous program's unanswered request to

@@ -49,6 +49,16 @@ public:
     // matrix: a reply 1 s late answered a read of the same length).
     void suspect(quint8 slave, double nowMs, int timeoutMs);
     bool isSuspect(quint8 slave, double nowMs);
+    // A suspect until `untilMs` whatever its exchanges show: the line's previous user gave up
+    // on a request to it (LateReplyJournal).
+    void suspectUntil(quint8 slave, double untilMs);
+    struct Suspect
+    {
+        quint8 slave = 0;
+        double untilMs = 0;
+    };
+    // The suspects not yet over at `nowMs`, for the line's next user.
+    QVector<Suspect> suspects(double nowMs);
     // An exchange with `slave` went well with no reply behind it (or none looked for): a reply
     // the line's previous user left unanswered can no longer come from it (isSuspect()).
     void checked(quint8 slave) { m_checkedSinceOpen.insert(slave); }

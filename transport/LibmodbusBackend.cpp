@@ -62,6 +62,7 @@ void LibmodbusBackend::close()
     m_open = false;
     m_late.clear();
     m_notes.clear();
+    m_replyTiming.reset();
     qCDebug(lcTransport) << "closed" << describe();
 }
 
@@ -95,9 +96,16 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         logEvent(request, result.message, result.errorText());
         return result;
     }
-    if (!keepFrameGap()) {
-        result.error = ModbusError::Cancelled;
-        return result;
+    // The line must be quiet for the gap before we send: bytes that arrive meanwhile are a
+    // reply nobody is waiting for, and would run into the request or be taken for its answer.
+    for (int round = 0;; ++round) {
+        if (!keepFrameGap()) {
+            result.error = ModbusError::Cancelled;
+            return result;
+        }
+        if (round == 4 || wireTimeMs(1) <= 0 || waitReadable(0) != 1)
+            break;
+        discardStaleInput(request);
     }
     // Also a reply swallowed by the previous request's recovery: whoever asked that drive
     // (a scan) hears of it with the next result.
@@ -110,6 +118,8 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
                  ? request.describe()
                  : QStringLiteral("%1 [%2]").arg(request.describe(), format.text()),
              QString());
+    m_sentBytes = int(sent.size());
+    m_earlyReplies = 0;
     m_timing.sending();
     if (!m_modbus.sendRaw(raw)) {
         portFailure(errno, QCoreApplication::translate("opentop::Transport", "send failed"),
@@ -183,6 +193,8 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         logEvent(request, result.message, result.errorText());
     } else if (result.error == ModbusError::Ok || result.error == ModbusError::Exception) {
         m_late.checked(request.slave);
+        if (!m_earlyReplies)
+            m_replyTiming.learn(result.elapsedMs, wireTimeMs(int(sent.size() + adu.size())));
     }
     if (result.error != ModbusError::Ok && result.error != ModbusError::Exception) {
         recover(request, timeoutMs);
@@ -244,8 +256,33 @@ void LibmodbusBackend::receiveStandard(const ModbusRequest& request, int timeout
                                        ModbusResult* result)
 {
     QByteArray buffer;
-    const int rc = m_modbus.receive(request.slave, std::max(1.0, timeoutMs - elapsedMs()), &buffer);
-    const int err = errno;
+    int rc = m_modbus.receive(request.slave, std::max(1.0, timeoutMs - elapsedMs()), &buffer);
+    int err = errno;
+    // A reply complete before it could have crossed the wire is a late answer to an earlier
+    // request: discarded, and the request's own answer awaited until the timeout.
+    for (int early = 0; rc > 0 && early < 4; ++early) {
+        *adu = buffer.left(rc);
+        RtuFrame::decodeReply(request, toRtuAdu(*adu), result);
+        const double tookMs = elapsedMs();
+        if (result->error != ModbusError::Ok && result->error != ModbusError::Exception)
+            return;
+        if (!m_replyTiming.tooEarly(tookMs, wireTimeMs(m_sentBytes + int(adu->size()))))
+            return;
+        discardEarlyReply(request, *adu, tookMs);
+        if (waitReadable(timeoutMs - elapsedMs()) != 1) {
+            adu->clear();
+            result->error = ModbusError::Timeout;
+            result->registers.clear();
+            result->message = QCoreApplication::translate("opentop::Transport",
+                                                          "no reply within %1 ms (a late reply "
+                                                          "to an earlier request was discarded)")
+                                  .arg(timeoutMs);
+            return;
+        }
+        buffer.clear();
+        rc = m_modbus.receive(request.slave, std::max(1.0, timeoutMs - elapsedMs()), &buffer);
+        err = errno;
+    }
     if (rc > 0) {
         *adu = buffer.left(rc);
         RtuFrame::decodeReply(request, toRtuAdu(*adu), result);
@@ -272,6 +309,24 @@ void LibmodbusBackend::receiveStandard(const ModbusRequest& request, int timeout
                     result);
 }
 
+void LibmodbusBackend::discardEarlyReply(const ModbusRequest& request, const QByteArray& adu,
+                                         double tookMs)
+{
+    ++m_earlyReplies;
+    const QByteArray rtu = toRtuAdu(adu);
+    const quint8 sender = rtu.isEmpty() ? request.slave : quint8(rtu.at(0));
+    // Its sender had an unanswered request: check its next replies for another behind them.
+    m_late.suspect(sender, nowMs(), m_settings.timeoutMs);
+    m_notes.noteDiscarded(rtu);
+    logFrame(false, adu, request, QString(),
+             QCoreApplication::translate("opentop::Transport",
+                                         "late reply discarded: complete %1 ms after the request, "
+                                         "where an answer needs at least %2 ms on the wire")
+                 .arg(tookMs, 0, 'f', 1)
+                 .arg(wireTimeMs(m_sentBytes + int(adu.size())), 0, 'f', 1),
+             -1, TrafficEntry::Kind::Late);
+}
+
 void LibmodbusBackend::portFailure(int err, const QString& what, ModbusResult* result)
 {
     result->error = ModbusError::PortError;
@@ -295,7 +350,8 @@ void LibmodbusBackend::discardStaleInput(const ModbusRequest& request)
     m_modbus.flush();
     logFrame(
         false, stale, request, QString(),
-        QCoreApplication::translate("opentop::Transport", "stale bytes discarded before sending"));
+        QCoreApplication::translate("opentop::Transport", "stale bytes discarded before sending"),
+        -1, TrafficEntry::Kind::Late);
 }
 
 int LibmodbusBackend::lateReplyWindowMs(const ModbusRequest& request, int timeoutMs) const
@@ -340,7 +396,8 @@ void LibmodbusBackend::drain(const ModbusRequest& request, double firstWindowMs,
     m_notes.noteDiscarded(toRtuAdu(late));
     logFrame(
         false, late, request, QString(),
-        QCoreApplication::translate("opentop::Transport", "late bytes discarded after an error"));
+        QCoreApplication::translate("opentop::Transport", "late bytes discarded after an error"),
+        -1, TrafficEntry::Kind::Late);
 }
 
 } // namespace opentop

@@ -7,6 +7,7 @@
 #include "transport/LineNotes.h"
 #include "transport/LineTiming.h"
 #include "transport/ModbusBackend.h"
+#include "transport/ReplyTiming.h"
 
 namespace opentop {
 
@@ -82,6 +83,11 @@ protected:
     // Fills `result` with a PortError; closes the backend when the error is fatal.
     void portFailure(int err, const QString& what, ModbusResult* result);
     double elapsedMs() const { return m_timing.elapsedMs(); }
+    // Who may still answer a request given up on, for the line's next user, and the same
+    // from the line's previous user (LateReplyJournal); times on clockMs()'s clock.
+    QVector<LateReplyWatch::Suspect> lateSuspects() { return m_late.suspects(nowMs()); }
+    void suspectUntil(quint8 slave, double untilMs) { m_late.suspectUntil(slave, untilMs); }
+    double clockMs() const { return nowMs(); }
     _modbus* context() const { return m_modbus.get(); }
     int descriptor() const { return m_modbus.socket(); }
 
@@ -89,6 +95,8 @@ private:
     void receiveStandard(const ModbusRequest& request, int timeoutMs, QByteArray* adu,
                          ModbusResult* result);
     void discardStaleInput(const ModbusRequest& request);
+    // A reply complete sooner than the wire allows (ReplyTiming): logged and counted as late.
+    void discardEarlyReply(const ModbusRequest& request, const QByteArray& adu, double tookMs);
     // After a reply that was garbled, foreign, malformed or incomplete: waits until the failed
     // request's late-reply window has passed and the line is quiet (see the class comment).
     void recover(const ModbusRequest& request, int timeoutMs);
@@ -115,9 +123,12 @@ private:
     ConnectionSettings m_line; // m_settings in the format in force
     LibmodbusContext m_modbus;
     bool m_open = false;
-    LineTiming m_timing;   // the clock of every time below, the gaps kept
-    LateReplyWatch m_late; // who may still answer a failed request
-    LineNotes m_notes;     // what was discarded, a held line
+    LineTiming m_timing;       // the clock of every time below, the gaps kept
+    LateReplyWatch m_late;     // who may still answer a failed request
+    LineNotes m_notes;         // what was discarded, a held line
+    ReplyTiming m_replyTiming; // whether a reply came sooner than the wire allows
+    int m_sentBytes = 0;       // the current request's frame on the wire
+    int m_earlyReplies = 0;    // replies discarded as too early for the current request
 };
 
 } // namespace opentop

@@ -57,7 +57,8 @@ QString ModbusBackend::describeReply(const ModbusRequest& request, const ModbusR
 }
 
 void ModbusBackend::logFrame(bool tx, const QByteArray& adu, const ModbusRequest& request,
-                             const QString& summary, const QString& error, double responseMs)
+                             const QString& summary, const QString& error, double responseMs,
+                             TrafficEntry::Kind kind)
 {
     TrafficEntry entry;
     entry.direction = tx ? TrafficEntry::Direction::Tx : TrafficEntry::Direction::Rx;
@@ -67,6 +68,7 @@ void ModbusBackend::logFrame(bool tx, const QByteArray& adu, const ModbusRequest
     entry.summary = summary;
     entry.error = error;
     entry.responseMs = tx ? -1 : responseMs;
+    entry.kind = kind;
     logEntry(entry, &request);
 }
 

@@ -47,7 +47,8 @@ public:
 protected:
     // Records a frame in the traffic log, if there is one.
     void logFrame(bool tx, const QByteArray& adu, const ModbusRequest& request,
-                  const QString& summary, const QString& error, double responseMs = -1);
+                  const QString& summary, const QString& error, double responseMs = -1,
+                  TrafficEntry::Kind kind = TrafficEntry::Kind::Frame);
     // Records a reply (or its absence) with the slave and function it really carried.
     void logReply(const QByteArray& adu, int slave, int function, const ModbusRequest& request,
                   const ModbusResult& result);

@@ -1,10 +1,12 @@
 #include "transport/RtuBackend.h"
 
 #include "transport/IoctlSerialDriver.h"
+#include "transport/LateReplyJournal.h"
 #include "transport/RtuFrame.h"
 #include "transport/SerialSysfs.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QFile>
 #include <algorithm>
 #include <cerrno>
@@ -53,13 +55,31 @@ bool RtuBackend::open(QString* error)
     m_lock.makeExclusive(descriptor());
     m_line = SerialLineSetup();
     m_lineReport = m_line.apply(*makeDriver(), settings(), SerialSysfs(settings().port));
+    // The drives the line's previous user gave up on may still answer (LateReplyJournal).
+    const qint64 wallMs = QDateTime::currentMSecsSinceEpoch();
+    const double nowMs = clockMs();
+    for (const LateReplyJournal::Entry& e : journal().take(wallMs))
+        suspectUntil(e.slave, nowMs + double(e.untilMs - wallMs));
     return true;
+}
+
+LateReplyJournal RtuBackend::journal() const
+{
+    return LateReplyJournal(m_lock.device().isEmpty() ? settings().port : m_lock.device());
 }
 
 void RtuBackend::close()
 {
-    if (descriptor() >= 0)
+    if (descriptor() >= 0) {
         m_line.restore(*makeDriver());
+        // For the line's next user: who may still answer a request we gave up on.
+        const qint64 wallMs = QDateTime::currentMSecsSinceEpoch();
+        const double nowMs = clockMs();
+        QVector<LateReplyJournal::Entry> entries;
+        for (const LateReplyWatch::Suspect& s : lateSuspects())
+            entries.append({s.slave, wallMs + qint64(std::ceil(s.untilMs - nowMs))});
+        journal().write(entries);
+    }
     m_lineReport = SerialLineReport();
     LibmodbusBackend::close();
     m_lock.release();

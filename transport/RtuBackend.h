@@ -1,5 +1,6 @@
 #pragma once
 
+#include "transport/LateReplyJournal.h"
 #include "transport/LibmodbusBackend.h"
 #include "transport/PortLock.h"
 #include "transport/SerialLineSetup.h"
@@ -53,6 +54,9 @@ protected:
     virtual std::unique_ptr<SerialDriver> makeDriver();
 
 private:
+    // Who may still answer a request the line's previous or next user gave up on.
+    LateReplyJournal journal() const;
+
     PortLock m_lock;
     SerialLineSetup m_line;
     SerialLineReport m_lineReport;

@@ -16,6 +16,14 @@ struct TrafficEntry
         Event
     };
 
+    // A frame that answered nothing asked now: bytes waiting before a request, bytes drained
+    // after an error, a reply sooner than the wire allows. Counted as late, not as replies.
+    enum class Kind
+    {
+        Frame,
+        Late
+    };
+
     quint64 sequence = 0;
     QDateTime time;
     Direction direction = Direction::Tx;
@@ -25,6 +33,7 @@ struct TrafficEntry
     QString summary;        // decoded meaning, e.g. "read 04 0x0109 x1" or "= 1500"
     QString error;          // empty when none
     double responseMs = -1; // Rx only: time from request to reply
+    Kind kind = Kind::Frame;
 
     QString directionText() const;
     QString toLine() const; // one human line, as --trace prints it

@@ -1,5 +1,6 @@
 #include "model/traffic/TrafficStatistics.h"
 
+#include "transport/ModbusCrc.h"
 #include "transport/ModbusResult.h"
 
 #include <QStringList>
@@ -13,6 +14,15 @@ void TrafficStatistics::add(const TrafficEntry& entry)
     if (entry.direction == TrafficEntry::Direction::Tx) {
         m_lastRequestSlave = entry.slave;
         ++stats(entry.slave).requests;
+        return;
+    }
+    if (entry.kind == TrafficEntry::Kind::Late) {
+        // Late bytes may hold a whole frame (a reply to an earlier request) or debris.
+        const bool frame = entry.bytes.size() >= 4 && ModbusCrc::check(entry.bytes) &&
+                           quint8(entry.bytes.at(0)) != 0;
+        ++stats(frame ? quint8(entry.bytes.at(0))
+                      : (m_lastRequestSlave >= 0 ? m_lastRequestSlave : entry.slave))
+              .late;
         return;
     }
     const int slave = m_lastRequestSlave >= 0 ? m_lastRequestSlave : entry.slave;
@@ -92,6 +102,7 @@ DriveTrafficStats TrafficStatistics::total() const
         t.crcErrors += s.crcErrors;
         t.exceptions += s.exceptions;
         t.garbled += s.garbled;
+        t.late += s.late;
         t.timedReplies += s.timedReplies;
         t.totalMs += s.totalMs;
         t.maxMs = std::max(t.maxMs, s.maxMs);

@@ -17,6 +17,7 @@ struct DriveTrafficStats
     int crcErrors = 0;  // replies with a bad CRC
     int exceptions = 0; // exception replies
     int garbled = 0;    // replies from the wrong machine number, or malformed
+    int late = 0;       // frames that answered nothing asked now (TrafficEntry::Kind::Late)
     int timedReplies = 0;
     double totalMs = 0;
     double maxMs = 0;
@@ -26,7 +27,8 @@ struct DriveTrafficStats
 };
 
 // Per-drive counters fed from traffic log entries in the order they were logged. Replies and
-// events count for the drive the last request went to (a reply may carry another number).
+// events count for the drive the last request went to (a reply may carry another number); a
+// late frame counts for the drive that sent it, where its first byte and CRC say so.
 class TrafficStatistics
 {
 public:

@@ -171,6 +171,24 @@ void FaultJudge::restore(const QVector<Setting>& file, const Truth& after, const
     }
 }
 
+void FaultJudge::needlessWrites(const QVector<Setting>& file, const Truth& before,
+                                const CliRun& run, FaultCounts* c)
+{
+    const QJsonObject report = run.json();
+    for (const Setting& s : file) {
+        if (before.value(MatrixSim::key(s.slave, s.name)) != s.registers)
+            continue;
+        const QString status =
+            itemOf(driveReport(report, s.slave), s.name).value(QStringLiteral("status")).toString();
+        if (status != QLatin1String("verified"))
+            continue;
+        ++c->needlessWrites;
+        c->findings << QStringLiteral("restore: drive %1 %2 written, but it already held %3")
+                           .arg(s.slave)
+                           .arg(s.name, registersText(s.registers));
+    }
+}
+
 void FaultJudge::compare(const QVector<Setting>& fileOfSlave, const Truth& truth, int slave,
                          const CliRun& run, FaultCounts* c)
 {

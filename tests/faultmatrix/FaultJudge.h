@@ -26,6 +26,10 @@ public:
     // A restore (opentop-cli --json restore FILE --yes) and the drives afterwards.
     static void restore(const QVector<Setting>& file, const Truth& after, const CliRun& run,
                         FaultCounts* counts);
+    // A restore that wrote a setting the drive already held (`before`, the truth before the
+    // run): it must have misread the drive (issue 28: late replies taken for answers).
+    static void needlessWrites(const QVector<Setting>& file, const Truth& before, const CliRun& run,
+                               FaultCounts* counts);
     // At the end: every drive equal to the file.
     static void finalState(const QVector<Setting>& file, const Truth& truth, FaultCounts* counts);
     // opentop-cli --json compare FILE:ID ID for one drive.

@@ -34,17 +34,19 @@ QString CliRun::reason() const
 }
 
 MatrixCli::MatrixCli(const QString& binDir, const QString& port, const QString& variants,
-                     const QString& busDrives)
+                     const QString& busDrives, int baud)
     : m_binDir(binDir)
     , m_port(port)
     , m_variants(variants)
     , m_busDrives(busDrives)
+    , m_baud(baud)
 {
 }
 
 QStringList MatrixCli::arguments(const QStringList& command) const
 {
-    QStringList args{QStringLiteral("--port"), m_port};
+    QStringList args{QStringLiteral("--port"), m_port, QStringLiteral("--baud"),
+                     QString::number(m_baud)};
     if (!m_variants.isEmpty())
         args << QStringLiteral("--variant") << m_variants;
     if (!m_busDrives.isEmpty())
@@ -62,7 +64,8 @@ CliRun MatrixCli::runWatching(const QStringList& command,
                               int timeoutMs) const
 {
     CliRun r;
-    r.arguments = arguments(onTrace ? command + QStringList{QStringLiteral("--trace")} : command);
+    r.arguments =
+        arguments(onTrace || m_trace ? command + QStringList{QStringLiteral("--trace")} : command);
     QProcess process;
     QElapsedTimer timer;
     timer.start();

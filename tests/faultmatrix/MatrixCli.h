@@ -29,9 +29,11 @@ public:
     // `busDrives`: the drives on the simulated bus (--bus-drives): a restore names the drives
     // each write reaches.
     MatrixCli(const QString& binDir, const QString& port, const QString& variants,
-              const QString& busDrives);
+              const QString& busDrives, int baud = 19200);
 
     CliRun run(const QStringList& command, int timeoutMs = 600000) const;
+    // Every run with --trace (MatrixOptions::traceDir).
+    void setTrace(bool on) { m_trace = on; }
     // Runs with --trace and calls `onTrace` with the trace so far until it returns true once
     // (e.g. to pull the port out after the third write); the run then goes on to its end.
     CliRun runWatching(const QStringList& command,
@@ -47,6 +49,8 @@ private:
     QString m_port;
     QString m_variants;
     QString m_busDrives;
+    int m_baud;
+    bool m_trace = false;
 };
 
 } // namespace opentop::faultmatrix

@@ -1,12 +1,11 @@
 #include "tests/faultmatrix/MatrixOptions.h"
 
 #include <QStringList>
+#include <algorithm>
 
 namespace opentop::faultmatrix {
 
-namespace {
-
-std::optional<QVector<int>> parseSeeds(const QString& text)
+std::optional<QVector<int>> MatrixOptions::parseList(const QString& text)
 {
     QVector<int> seeds;
     for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
@@ -25,8 +24,6 @@ std::optional<QVector<int>> parseSeeds(const QString& text)
     return seeds;
 }
 
-} // namespace
-
 QString MatrixOptions::usage()
 {
     return QStringLiteral(
@@ -43,6 +40,13 @@ QString MatrixOptions::usage()
         "                    run must then fail (proves the counting can fail)\n"
         "  --self-test       check the counting rules on made-up reports, then a sabotaged\n"
         "                    run; exits 0 when every planted fault was counted\n"
+        "  --baud N          the line's rate (19200)\n"
+        "  --late-sweep MS   only late replies: each seed at every rate of --bauds and each\n"
+        "                    delay of MS (e.g. 50,200,450,1000,2000); prints false compare\n"
+        "                    rows, misreads and needless writes per delay and rate\n"
+        "  --bauds LIST      the rates of --late-sweep (9600,19200,115200)\n"
+        "  --late-rate R     the share of replies sent late in --late-sweep (0.10)\n"
+        "  --trace-dir DIR   run opentop-cli with --trace and keep each run's trace in DIR\n"
         "  --bin-dir DIR     where opentop-sim and opentop-cli are\n"
         "  --verbose         print every command and its output\n");
 }
@@ -65,7 +69,7 @@ std::optional<MatrixOptions> MatrixOptions::parse(const QStringList& arguments, 
         if (arg == QLatin1String("--seeds")) {
             if (!value(&v))
                 return std::nullopt;
-            const auto seeds = parseSeeds(v);
+            const auto seeds = parseList(v);
             if (!seeds) {
                 *error = QStringLiteral("--seeds: '%1' is not a list such as 1-5 or 3,7").arg(v);
                 return std::nullopt;
@@ -82,8 +86,41 @@ std::optional<MatrixOptions> MatrixOptions::parse(const QStringList& arguments, 
                 return std::nullopt;
             }
             (arg == QLatin1String("--drives") ? o.drives : o.attempts) = n;
+        } else if (arg == QLatin1String("--late-sweep") || arg == QLatin1String("--bauds") ||
+                   arg == QLatin1String("--baud")) {
+            if (!value(&v))
+                return std::nullopt;
+            const auto list = parseList(v);
+            const bool bauds = arg != QLatin1String("--late-sweep");
+            const bool fits = list && std::all_of(list->begin(), list->end(), [&](int n) {
+                                  return bauds ? n >= 1200 && n <= 115200 : n >= 1 && n <= 10000;
+                              });
+            if (!fits || (arg == QLatin1String("--baud") && list->size() != 1)) {
+                *error = QStringLiteral("%1: '%2' is not %3")
+                             .arg(arg, v,
+                                  bauds ? QStringLiteral("a rate 1200..115200 (or a list)")
+                                        : QStringLiteral("a list of delays 1..10000 ms"));
+                return std::nullopt;
+            }
+            if (arg == QLatin1String("--baud"))
+                o.baud = list->first();
+            else
+                (bauds ? o.sweepBauds : o.lateSweepMs) = *list;
+        } else if (arg == QLatin1String("--late-rate")) {
+            if (!value(&v))
+                return std::nullopt;
+            bool ok = false;
+            o.lateRate = v.toDouble(&ok);
+            if (!ok || o.lateRate <= 0 || o.lateRate > 0.5) {
+                *error =
+                    QStringLiteral("--late-rate must be above 0 and at most 0.5, got '%1'").arg(v);
+                return std::nullopt;
+            }
         } else if (arg == QLatin1String("--faults")) {
             if (!value(&o.faults))
+                return std::nullopt;
+        } else if (arg == QLatin1String("--trace-dir")) {
+            if (!value(&o.traceDir))
                 return std::nullopt;
         } else if (arg == QLatin1String("--bin-dir")) {
             if (!value(&o.binDir))

@@ -18,7 +18,15 @@ struct MatrixOptions
     int attempts = 4;      // runs of an operation that gave up before the seed is abandoned
     QString binDir;        // where opentop-sim and opentop-cli are
     bool verbose = false;
+    QString traceDir; // --trace-dir: every opentop-cli run with --trace, its stderr kept here
+    int baud = 19200; // the line's rate, for opentop-sim --wire-timing and opentop-cli
+    // --late-sweep: every seed at each rate and each late-reply delay (ms), only late faults.
+    QVector<int> lateSweepMs;
+    QVector<int> sweepBauds{9600, 19200, 115200};
+    double lateRate = 0.10;
 
+    // parseSeeds' syntax for any list of numbers ("50,450,2000", "1-3").
+    static std::optional<QVector<int>> parseList(const QString& text);
     static std::optional<MatrixOptions> parse(const QStringList& arguments, QString* error);
     static QString usage();
     // "dbu200@1,dbu200@2,dbu400@3,...": a mix of DBU200, DBU400 and DC controllers.

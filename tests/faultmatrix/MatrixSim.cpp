@@ -19,13 +19,13 @@ MatrixSim::~MatrixSim()
 }
 
 bool MatrixSim::start(const QString& devices, const QString& faults, int seed, const QString& link,
-                      QString* error)
+                      int baud, QString* error)
 {
     QStringList arguments{QStringLiteral("--devices"),
                           devices,
                           QStringLiteral("--wire-timing"),
                           QStringLiteral("--baud"),
-                          QStringLiteral("19200"),
+                          QString::number(baud),
                           QStringLiteral("--seed"),
                           QString::number(seed),
                           QStringLiteral("--pty"),

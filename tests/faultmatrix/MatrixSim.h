@@ -19,7 +19,7 @@ public:
     ~MatrixSim();
 
     bool start(const QString& devices, const QString& faults, int seed, const QString& link,
-               QString* error);
+               int baud, QString* error);
     void stop();
 
     // One console command and its one-line answer ("" when the simulator did not answer).

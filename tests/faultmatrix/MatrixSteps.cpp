@@ -1,6 +1,7 @@
 #include "tests/faultmatrix/MatrixSteps.h"
 
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 
@@ -42,10 +43,12 @@ MatrixSteps::MatrixSteps(const MatrixOptions& options, int seed, QTextStream& lo
     , m_file(m_dir.filePath(QStringLiteral("bus.json")))
     , m_sim(options.binDir)
     , m_cli(options.binDir, m_link, MatrixOptions::variantList(options.drives),
-            options.drives == 1 ? QStringLiteral("1") : QStringLiteral("1-%1").arg(options.drives))
+            options.drives == 1 ? QStringLiteral("1") : QStringLiteral("1-%1").arg(options.drives),
+            options.baud)
     , m_random(std::mt19937::result_type(seed))
 {
     m_counts.label = QStringLiteral("seed %1").arg(seed);
+    m_cli.setTrace(!options.traceDir.isEmpty());
 }
 
 bool MatrixSteps::start(QString* error)
@@ -55,7 +58,7 @@ bool MatrixSteps::start(QString* error)
         return false;
     }
     return m_sim.start(MatrixOptions::deviceSpec(m_options.drives), m_options.faults, m_seed,
-                       m_link, error);
+                       m_link, m_options.baud, error);
 }
 
 QVector<int> MatrixSteps::slaves() const
@@ -83,6 +86,16 @@ void MatrixSteps::ran(const CliRun& run)
     ++m_counts.operations;
     if (m_options.verbose)
         m_log << MatrixCli::describe(run) << '\n';
+    if (!m_options.traceDir.isEmpty()) {
+        QFile file(QStringLiteral("%1/seed%2-%3-%4.log")
+                       .arg(m_options.traceDir)
+                       .arg(m_seed)
+                       .arg(m_counts.operations, 2, 10, QLatin1Char('0'))
+                       .arg(run.arguments.value(run.arguments.indexOf(QStringLiteral("--json")) + 1,
+                                                run.arguments.value(6))));
+        if (file.open(QIODevice::WriteOnly))
+            file.write((MatrixCli::describe(run) + run.err).toUtf8());
+    }
 }
 
 void MatrixSteps::abandon(const QString& step)
@@ -175,10 +188,12 @@ int MatrixSteps::changeSettings()
 bool MatrixSteps::restore()
 {
     for (int attempt = 1; attempt <= m_options.attempts; ++attempt) {
+        const Truth before = truth();
         const CliRun run = m_cli.run(
             {QStringLiteral("--json"), QStringLiteral("restore"), m_file, QStringLiteral("--yes")});
         ran(run);
         FaultJudge::restore(m_backup, truth(), run, &m_counts);
+        FaultJudge::needlessWrites(m_backup, before, run, &m_counts);
         if (run.code == 0) {
             note(QStringLiteral("restore: exit 0 in %1 ms").arg(run.ms));
             return true;

@@ -2,6 +2,7 @@
 // real opentop-sim (--wire-timing, seeded faults, a pty) and opentop-cli as a user would, and
 // counts what the tool got wrong or did not report. See docs/communication.md.
 #include "tests/faultmatrix/FaultCounts.h"
+#include "tests/faultmatrix/LateSweep.h"
 #include "tests/faultmatrix/MatrixOptions.h"
 #include "tests/faultmatrix/MatrixSteps.h"
 #include "tests/faultmatrix/SelfTest.h"
@@ -25,7 +26,8 @@ void printTable(QTextStream& out, const QVector<FaultCounts>& rows)
         total.add(row);
     }
     total.printRow(out);
-    out << "must be 0: backup≠drive, not-verified, wrong-after, unreported, false-diffs\n";
+    out << "must be 0: backup≠drive, not-verified, wrong-after, unreported, false-diffs, "
+           "needless-writes\n";
     if (!total.gaveUpReasons.isEmpty()) {
         out << "operations that gave up, with the reason the tool gave:\n";
         for (const FaultCounts& row : rows) {
@@ -61,6 +63,8 @@ int main(int argc, char* argv[])
     }
     if (options->selfTest)
         return SelfTest(*options, out).run();
+    if (!options->lateSweepMs.isEmpty())
+        return LateSweep(*options, out).run() ? 0 : 1;
 
     QElapsedTimer timer;
     timer.start();

@@ -1,6 +1,6 @@
-// Gives a test process its own settings, data and cache folders. ctest runs two test processes
-// at once, and QSettings is one file per user: a test clearing the settings in its set-up
-// erased what a test running beside it had just remembered (CI failed so, once).
+// Gives a test process its own settings, data and cache folders (and late-reply journal). ctest
+// runs two test processes at once, and QSettings is one file per user: a test clearing the settings
+// in its set-up erased what a test running beside it had just remembered (CI failed so, once).
 #pragma once
 #include <QByteArray>
 #include <QDir>
@@ -24,6 +24,10 @@ public:
             const QByteArray var = QByteArray("XDG_") + QByteArray(name).toUpper() + "_HOME";
             qputenv(var.constData(), QFile::encodeName(path));
         }
+        // The late-reply journal is per device, and ptys are numbered again as tests end:
+        // one test process must not inherit another's (LateReplyJournal).
+        const QString late = m_dir.filePath(QStringLiteral("late"));
+        qputenv("OPENTOP_LATE_JOURNAL_DIR", QFile::encodeName(late));
     }
 
 private:

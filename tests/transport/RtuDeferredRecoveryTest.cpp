@@ -141,9 +141,14 @@ TEST(RtuDeferredRecoveryTest, LateReplyFromAnotherSlaveIsRejected)
     auto backend = openBackend(device, &log);
     EXPECT_EQ(backend->transact(probe(1), 50).error, ModbusError::Timeout);
     ModbusResult r = backend->transact(probe(2), 300);
-    EXPECT_EQ(r.error, ModbusError::WrongSlave) << r.errorText().toStdString();
+    // Arriving while the line is kept quiet before the probe (issue 28), the late frame is
+    // discarded and the probe gets its own answer; arriving after it went out, it is rejected.
+    if (r.error == ModbusError::Ok)
+        EXPECT_EQ(r.registers, QVector<quint16>({2222}));
+    else
+        EXPECT_EQ(r.error, ModbusError::WrongSlave) << r.errorText().toStdString();
     EXPECT_FALSE(r.registers.contains(1111));
-    // The rejection drained slave 2's own reply as well: the next answer is clean.
+    // Either way slave 2's own reply is not left for the next request: the next answer is clean.
     r = backend->transact(ModbusRequest::readHolding(2, 0, 1), 300);
     ASSERT_EQ(r.error, ModbusError::Ok) << r.errorText().toStdString();
     EXPECT_EQ(r.registers, QVector<quint16>({2222}));

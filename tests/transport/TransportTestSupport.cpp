@@ -1,5 +1,6 @@
 #include "tests/transport/TransportTestSupport.h"
 
+#include "transport/LateReplyJournal.h"
 #include "transport/RtuFrame.h"
 
 #include <QCoreApplication>
@@ -121,6 +122,8 @@ PtyDevice::PtyDevice()
         ::tcsetattr(fd, TCSANOW, &tio);
     }
     m_path = QString::fromLocal8Bit(name);
+    // A new device: what an earlier test left for a pty of the same number is not its own.
+    LateReplyJournal(m_path).write({});
 }
 
 PtyDevice::~PtyDevice()

@@ -108,13 +108,16 @@ TrafficLogView::TrafficLogView(TrafficLog* log, QWidget* parent)
                             metrics.horizontalAdvance(QLatin1Char('x')) * 18);
     m_table->setTextElideMode(Qt::ElideRight);
 
-    const QStringList statsHeaders = {tr("Drive"),         tr("Requests"),   tr("Replies"),
-                                      tr("Timeouts"),      tr("CRC errors"), tr("Exceptions"),
-                                      tr("Wrong/garbled"), tr("Mean ms"),    tr("Max ms")};
+    const QStringList statsHeaders = {
+        tr("Drive"),      tr("Requests"),      tr("Replies"),      tr("Timeouts"), tr("CRC errors"),
+        tr("Exceptions"), tr("Wrong/garbled"), tr("Late replies"), tr("Mean ms"),  tr("Max ms")};
     m_stats->setObjectName(QStringLiteral("trafficStatistics"));
     m_stats->setAccessibleName(tr("Statistics per drive"));
     m_stats->setColumnCount(int(statsHeaders.size()));
     m_stats->setHorizontalHeaderLabels(statsHeaders);
+    m_stats->horizontalHeaderItem(7)->setToolTip(
+        tr("Frames that answered nothing asked at the time: a reply to an earlier request "
+           "that came too late, discarded and never taken as a value"));
     m_stats->verticalHeader()->hide();
     m_stats->setEditTriggers(QAbstractItemView::NoEditTriggers);
     // Its header and a row at least, not a scroll bar's height: with every dock open on a
@@ -321,6 +324,7 @@ void TrafficLogView::refresh()
                                    QString::number(s.crcErrors),
                                    QString::number(s.exceptions),
                                    QString::number(s.garbled),
+                                   QString::number(s.late),
                                    QString::number(s.meanMs(), 'f', 1),
                                    QString::number(s.maxMs, 'f', 1)};
         for (int column = 0; column < texts.size(); ++column)

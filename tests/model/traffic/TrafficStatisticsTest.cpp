@@ -3,6 +3,7 @@
 
 #include "sim/FaultInjector.h"
 #include "transport/ModbusRequest.h"
+#include "transport/RtuFrame.h"
 
 using namespace opentop;
 using namespace opentop::test;
@@ -105,4 +106,27 @@ TEST(TrafficStatisticsTest, AddressesThatNeverAnsweredAreListedAsRanges)
     EXPECT_EQ(stats.unanswered(), (QVector<int>{2, 3, 5, 8, 9}));
     EXPECT_EQ(TrafficStatistics::rangesText(stats.unanswered()), QStringLiteral("2–3, 5, 8–9"));
     EXPECT_EQ(TrafficStatistics::rangesText({}), QString());
+}
+
+TEST(TrafficStatisticsTest, LateFramesCountForTheirSenderAndNotAsReplies)
+{
+    // A late reply discarded while drive 2 was asked: it is drive 1's (its id and CRC say so),
+    // and it is neither a reply to drive 2 nor garbled. Debris without a frame counts for the
+    // drive asked.
+    using D = TrafficEntry::Direction;
+    TrafficStatistics stats;
+    stats.add(frame(D::Tx, 2, 3));
+    TrafficEntry late = frame(D::Rx, 2, 3, QStringLiteral("late reply discarded"));
+    late.kind = TrafficEntry::Kind::Late;
+    late.bytes = RtuFrame::encodeReadReply(1, 0x03, {1111});
+    stats.add(late);
+    late.bytes = QByteArray::fromHex("01ff");
+    stats.add(late);
+    stats.add(frame(D::Rx, 2, 3, QString(), 20));
+    EXPECT_EQ(stats.drive(1).late, 1);
+    EXPECT_EQ(stats.drive(1).replies, 0);
+    EXPECT_EQ(stats.drive(2).late, 1);
+    EXPECT_EQ(stats.drive(2).replies, 1);
+    EXPECT_EQ(stats.drive(2).garbled, 0);
+    EXPECT_EQ(stats.total().late, 2);
 }

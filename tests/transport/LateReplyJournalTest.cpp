@@ -1,0 +1,113 @@
+// A drive's late reply to a request the line's previous user gave up on (issue 28): the next
+// program checks every reply from that drive until the late-reply window is over, not only
+// its first exchange. LateReplyJournal carries who and until when from one program to the
+// next.
+#include "transport/LateReplyJournal.h"
+#include "tests/transport/TransportTestSupport.h"
+#include "transport/RtuBackend.h"
+#include "transport/RtuFrame.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QTemporaryDir>
+#include <gtest/gtest.h>
+#include <memory>
+
+using namespace opentop;
+using namespace opentop::test;
+
+TEST(LateReplyJournalTest, EntriesGoFromOneProgramToTheNextOnce)
+{
+    QTemporaryDir dir;
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const LateReplyJournal journal(QStringLiteral("/dev/ttyUSB0"), dir.path());
+    journal.write({{3, now + 2000}, {7, now - 5}});
+    ASSERT_TRUE(QFile::exists(journal.path()));
+    const QVector<LateReplyJournal::Entry> taken = journal.take(now);
+    ASSERT_EQ(taken.size(), 1) << "an entry already over is dropped";
+    EXPECT_EQ(taken[0].slave, 3);
+    EXPECT_EQ(taken[0].untilMs, now + 2000);
+    EXPECT_FALSE(QFile::exists(journal.path())) << "taken once";
+    EXPECT_TRUE(journal.take(now).isEmpty());
+    // Another device's journal is another file.
+    journal.write({{3, now + 2000}});
+    EXPECT_TRUE(LateReplyJournal(QStringLiteral("/dev/ttyUSB1"), dir.path()).take(now).isEmpty());
+    // Nothing to leave: no file.
+    journal.write({});
+    EXPECT_FALSE(QFile::exists(journal.path()));
+}
+
+TEST(LateReplyJournalTest, AFileThatIsNotAJournalGivesNothing)
+{
+    QTemporaryDir dir;
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const LateReplyJournal journal(QStringLiteral("/dev/ttyUSB0"), dir.path());
+    QFile file(journal.path());
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("0 99999999999999\n300 " + QByteArray::number(now + 1000) + "\nx y\n\n" + "5 " +
+               QByteArray::number(now + 3600 * 1000) + "\n" + "9 " + QByteArray::number(now + 500) +
+               "\n");
+    file.close();
+    const QVector<LateReplyJournal::Entry> taken = journal.take(now);
+    ASSERT_EQ(taken.size(), 1) << "no broadcast, no number above 247, nothing an hour away";
+    EXPECT_EQ(taken[0].slave, 9);
+}
+
+namespace {
+
+ModbusRequest readOf(quint16 address)
+{
+    return ModbusRequest::readHolding(1, address, 1);
+}
+
+std::unique_ptr<RtuBackend> openOn(const PtyDevice& device)
+{
+    ConnectionSettings s;
+    s.port = device.path();
+    s.baud = 19200;
+    s.parity = 'N';
+    auto backend = std::make_unique<RtuBackend>(s);
+    QString error;
+    EXPECT_TRUE(backend->open(&error)) << error.toStdString();
+    return backend;
+}
+
+} // namespace
+
+TEST(LateReplyJournalTest, TheNextProgramChecksEveryReplyOfADriveTheLastOneGaveUpOn)
+{
+    // (The test process has a journal folder of its own: PrivateUserDirs.)
+    // The first program's read of 0x0311 gets no reply in time (the drive answers it late,
+    // while the next program reads 0x0401: 1111 comes first, then 0x0401's own 2222).
+    std::atomic<bool> late{false};
+    PtyDevice device;
+    device.start([&late](const QByteArray& request) {
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        Answer a;
+        if (r.address == 0x0311)
+            return a; // silent: the reply comes later
+        if (r.address == 0x0401 && !late.exchange(true)) {
+            a.bytes = RtuFrame::encodeReadReply(1, 0x03, {1111});
+            a.second = RtuFrame::encodeReadReply(1, 0x03, {2222});
+            a.secondDelayMs = 5;
+            return a;
+        }
+        a.bytes = RtuFrame::encodeReadReply(1, 0x03, {quint16(r.address)});
+        return a;
+    });
+    {
+        auto first = openOn(device);
+        EXPECT_EQ(first->transact(readOf(0x0311), 100).error, ModbusError::Timeout);
+    } // closed: the program exits
+    auto next = openOn(device);
+    // Its first exchange with the drive is clean; before issue 28 that cleared the drive.
+    const ModbusResult clean = next->transact(readOf(0x0100), 300);
+    ASSERT_EQ(clean.error, ModbusError::Ok) << clean.errorText().toStdString();
+    const ModbusResult r = next->transact(readOf(0x0401), 300);
+    EXPECT_FALSE(r.registers.contains(1111)) << "a late reply taken for 0x0401's answer";
+    EXPECT_NE(r.error, ModbusError::Ok) << "two replies came: the one taken may be late";
+    const ModbusResult again = next->transact(readOf(0x0401), 300);
+    ASSERT_EQ(again.error, ModbusError::Ok) << again.errorText().toStdString();
+    EXPECT_EQ(again.registers, QVector<quint16>({0x0401}));
+}
