@@ -5,6 +5,7 @@
 #include "cli/TextTable.h"
 #include "model/alarms/AlarmHistory.h"
 #include "model/bus/DriveName.h"
+#include "model/io/DisplayText.h"
 #include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
@@ -190,7 +191,7 @@ int AlarmsCommand::run(CliContext& context, const QStringList& args)
     const int slave = ids->first();
     DeviceSession* session = context.session(slave, &error);
     if (!session) {
-        err << tr("error: %1").arg(error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     AlarmHistory history(session);

@@ -6,6 +6,7 @@
 #include "model/bus/BusScanner.h"
 #include "model/files/BackupFile.h"
 #include "model/files/DriveBatchReader.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 #include "model/profile/ProfileRegistry.h"
 #include "transport/ModbusClient.h"
@@ -59,7 +60,7 @@ std::optional<QVector<int>> BackupCommand::selectIds(CliContext& context, const 
     QString error;
     const auto ids = CliContext::parseIds(args.join(QLatin1Char(',')), &error);
     if (!ids)
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
     return ids;
 }
 
@@ -105,9 +106,10 @@ int BackupCommand::portLost(CliContext& context, const QString& path, const QStr
         }
     }
     context.err() << tr("error: the port %1 was lost while reading %2 (%3)")
-                         .arg(context.settings().port, drive, reason)
+                         .arg(DisplayText::escaped(context.settings().port), drive,
+                              DisplayText::escapedLines(reason))
                   << Qt::endl;
-    context.err() << tr("nothing written to %1").arg(path) << Qt::endl;
+    context.err() << tr("nothing written to %1").arg(DisplayText::escaped(path)) << Qt::endl;
     return ExitCommunication;
 }
 
@@ -240,17 +242,18 @@ int BackupCommand::run(CliContext& context, const QStringList& args)
                                                                       : QStringList{saveError})}});
     }
     for (const QString& f : failures)
-        context.err() << tr("error: %1").arg(f) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(f)) << Qt::endl;
     if (!failures.isEmpty()) {
-        context.err() << tr("nothing written to %1").arg(path) << Qt::endl;
+        context.err() << tr("nothing written to %1").arg(DisplayText::escaped(path)) << Qt::endl;
         return communication ? ExitCommunication : ExitInvalid;
     }
     if (!written) {
-        context.err() << tr("error: %1").arg(saveError) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(saveError)) << Qt::endl;
         return ExitUsage;
     }
     if (!context.json())
-        context.out() << trn("wrote %1: %n drive(s)", int(file.devices.size())).arg(path)
+        context.out() << trn("wrote %1: %n drive(s)", int(file.devices.size()))
+                             .arg(DisplayText::escaped(path))
                       << Qt::endl;
     return ExitOk;
 }

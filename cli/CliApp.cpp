@@ -4,6 +4,7 @@
 #include "cli/CliContext.h"
 #include "cli/ExitCode.h"
 #include "connection/ConnectionOptions.h"
+#include "model/io/DisplayText.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -184,7 +185,8 @@ int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err
     if (!parsed) {
         setUp(parser, nullptr);
         if (!parser.parse(arguments)) {
-            err << program << ": " << parser.errorText() << '\n'
+            // The parser's message quotes the argument as given.
+            err << program << ": " << DisplayText::escaped(parser.errorText()) << '\n'
                 << tr("Try \"%1 --help\".").arg(program) << Qt::endl;
             return ExitUsage;
         }
@@ -205,7 +207,8 @@ int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err
     }
     CliCommand* command = find(positional.first());
     if (!command) {
-        err << tr("%1: unknown command \"%2\"; commands: ").arg(program, positional.first());
+        err << tr("%1: unknown command \"%2\"; commands: ")
+                   .arg(program, DisplayText::escaped(positional.first()));
         QStringList names;
         for (const auto& c : m_commands)
             names << c->name();
@@ -228,7 +231,7 @@ int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err
     for (const QString& name : parser.optionNames()) {
         if (!global.contains(name) && !commandOptions.value(command->name()).contains(name)) {
             err << tr("%1 %2: --%3 is not an option of this command; see \"%1 help %2\"")
-                       .arg(program, command->name(), name)
+                       .arg(program, command->name(), DisplayText::escaped(name))
                 << Qt::endl;
             return ExitUsage;
         }
@@ -238,7 +241,7 @@ int CliApp::run(const QStringList& arguments, QTextStream& out, QTextStream& err
     if (wrong.isEmpty() && parser.isSet(QStringLiteral("variant")))
         wrong = CliContext::variantError(parser.value(QStringLiteral("variant")));
     if (!wrong.isEmpty()) {
-        err << tr("%1: %2").arg(program, wrong) << '\n'
+        err << tr("%1: %2").arg(program, DisplayText::escapedLines(wrong)) << '\n'
             << tr("Try \"%1 --help\".").arg(program) << Qt::endl;
         return ExitUsage;
     }

@@ -4,6 +4,7 @@
 #include "connection/ConnectionOptions.h"
 #include "model/bus/BusMemory.h"
 #include "model/bus/BusSpec.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/session/DeviceIdentifier.h"
 #include "model/session/DeviceSession.h"
@@ -93,7 +94,7 @@ bool CliContext::connectBus()
     if (!settings) {
         // A wrong or missing connection option is a wrong command line (exit 2), said once.
         if (!m_usageError)
-            m_err << tr("error: %1").arg(error) << Qt::endl;
+            m_err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         m_usageError = true;
         return false;
     }
@@ -107,7 +108,7 @@ bool CliContext::connectBus()
     }
     BackendFactory::Made made = BackendFactory::makeClient(m_settings, m_log.get());
     if (!made.client) {
-        m_err << tr("error: %1").arg(made.error) << Qt::endl;
+        m_err << tr("error: %1").arg(DisplayText::escapedLines(made.error)) << Qt::endl;
         return false;
     }
     m_simBus = made.simBus;
@@ -115,7 +116,7 @@ bool CliContext::connectBus()
     const QString openError = m_client->openBlocking();
     if (!openError.isEmpty()) {
         // The transport's text already names the port ("Cannot open /dev/ttyUSB0 19200 8N1: ...").
-        m_err << tr("error: %1").arg(openError) << Qt::endl;
+        m_err << tr("error: %1").arg(DisplayText::escapedLines(openError)) << Qt::endl;
         m_client.reset();
         return false;
     }

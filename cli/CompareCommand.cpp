@@ -7,6 +7,7 @@
 #include "model/bus/DriveName.h"
 #include "model/files/Comparer.h"
 #include "model/files/DriveBatchReader.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -66,7 +67,7 @@ std::optional<CompareCommand::Side> CompareCommand::readDrive(CliContext& contex
     const DriveBatchReader::Drive drive = drives.value(0);
     if (!drive.error.isEmpty() || !drive.read.failures.isEmpty()) {
         for (const QString& problem : drive.problems())
-            context.err() << tr("error: %1").arg(problem) << Qt::endl;
+            context.err() << tr("error: %1").arg(DisplayText::escapedLines(problem)) << Qt::endl;
         return std::nullopt;
     }
     const BackupReader::Result& result = drive.read;
@@ -83,7 +84,7 @@ std::optional<CompareCommand::Side> CompareCommand::resolve(CliContext& context,
         QString error;
         const auto ids = CliContext::parseIds(text, &error);
         if (!ids) {
-            context.err() << tr("error: %1").arg(error) << Qt::endl;
+            context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
             *code = ExitUsage;
             return std::nullopt;
         }
@@ -104,10 +105,11 @@ std::optional<CompareCommand::Side> CompareCommand::resolve(CliContext& context,
     if (!file->device(slave)) {
         context.err() << (slave == 0 ? tr("error: %1 holds several drives (%2): name one as "
                                           "%1:ID")
-                                           .arg(path, FileCommandSupport::idList(file->slaves()))
+                                           .arg(DisplayText::escaped(path),
+                                                FileCommandSupport::idList(file->slaves()))
                                      : tr("error: %1 holds no drive with machine number %2; it "
                                           "holds %3")
-                                           .arg(path)
+                                           .arg(DisplayText::escaped(path))
                                            .arg(slave)
                                            .arg(FileCommandSupport::idList(file->slaves())))
                       << Qt::endl;
@@ -141,7 +143,7 @@ int CompareCommand::run(CliContext& context, const QStringList& args)
                                              : Comparer::compare(*profile, a->device, b->device);
     const QString bLabel = defaults ? tr("factory defaults") : b->label;
     if (!result.refusal.isEmpty()) {
-        context.err() << tr("error: %1").arg(result.refusal) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(result.refusal)) << Qt::endl;
         return ExitInvalid;
     }
     if (context.json()) {
@@ -166,9 +168,14 @@ int CompareCommand::run(CliContext& context, const QStringList& args)
         return ExitOk;
     }
     QTextStream& out = context.out();
-    out << tr("A: %1 (%2)").arg(a->label, a->device.model) << '\n'
-        << tr("B: %1").arg(bLabel)
-        << (defaults ? QString() : QStringLiteral(" (%1)").arg(b->device.model)) << '\n';
+    // Labels name files; models come from them: shown escaped (DisplayText).
+    out << tr("A: %1 (%2)")
+               .arg(DisplayText::escaped(a->label), DisplayText::escaped(a->device.model))
+        << '\n'
+        << tr("B: %1").arg(DisplayText::escaped(bLabel))
+        << (defaults ? QString()
+                     : QStringLiteral(" (%1)").arg(DisplayText::escaped(b->device.model)))
+        << '\n';
     if (!result.differences.isEmpty()) {
         TextTable table({tr("parameter"), tr("A"), tr("B")});
         for (const Comparer::Difference& d : result.differences)
@@ -183,9 +190,9 @@ int CompareCommand::run(CliContext& context, const QStringList& args)
     if (!result.noDefault.isEmpty())
         out << trn("%n setting(s) with no factory default documented: ",
                    int(result.noDefault.size()))
-            << result.noDefault.join(QStringLiteral(", ")) << '\n';
+            << DisplayText::escaped(result.noDefault.join(QStringLiteral(", "))) << '\n';
     for (const QString& note : result.notes)
-        out << tr("note: %1").arg(note) << '\n';
+        out << tr("note: %1").arg(DisplayText::escapedLines(note)) << '\n';
     out.flush();
     return ExitOk;
 }

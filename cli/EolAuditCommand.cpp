@@ -7,6 +7,7 @@
 #include "cli/TextTable.h"
 #include "model/access/AuditTrail.h"
 #include "model/eol/ResultDatabase.h"
+#include "model/io/DisplayText.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -58,7 +59,7 @@ int EolAuditCommand::run(CliContext& context, const QStringList& args)
         filter.since = EolResultsCommand::parseTime(parser.value(QStringLiteral("since")),
                                                     QDateTime::currentDateTime(), &error);
         if (!filter.since.isValid()) {
-            err << tr("error: --since: %1").arg(error) << Qt::endl;
+            err << tr("error: --since: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
             return ExitUsage;
         }
     }
@@ -70,7 +71,7 @@ int EolAuditCommand::run(CliContext& context, const QStringList& args)
         return code;
     const auto entries = AuditTrail(*db).query(filter, &error);
     if (!entries) {
-        err << tr("error: %1").arg(error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     if (context.json()) {

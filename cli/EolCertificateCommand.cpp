@@ -7,6 +7,7 @@
 #include "model/eol/ResultDatabase.h"
 #include "model/eol/ResultQueries.h"
 #include "model/eol/UnitRecordJson.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 #include "report/CertificatePdf.h"
 
@@ -69,7 +70,7 @@ int EolCertificateCommand::run(CliContext& context, const QStringList& args)
     const QString path = parser.value(QStringLiteral("o"));
     if (!path.isEmpty()) {
         if (const QString problem = OutputFile::problem(path); !problem.isEmpty()) {
-            context.err() << tr("error: %1").arg(problem) << Qt::endl;
+            context.err() << tr("error: %1").arg(DisplayText::escapedLines(problem)) << Qt::endl;
             return ExitUsage;
         }
     }
@@ -92,26 +93,34 @@ int EolCertificateCommand::run(CliContext& context, const QStringList& args)
     if (byId) {
         record = queries.load(id, &error);
         if (!record) {
-            context.err()
-                << tr("error: no record %1 in %2 (%3)").arg(id, db->url().displayText(), error)
-                << Qt::endl;
+            context.err() << tr("error: no record %1 in %2 (%3)")
+                                 .arg(DisplayText::escaped(id),
+                                      DisplayText::escaped(db->url().displayText()),
+                                      DisplayText::escapedLines(error))
+                          << Qt::endl;
             return ExitInvalid;
         }
         if (!serial.isEmpty() && record->serial != serial) {
             context.err() << tr("error: record %1 is of serial number %2, not %3")
-                                 .arg(id, record->serial, serial)
+                                 .arg(DisplayText::escaped(id),
+                                      DisplayText::escaped(record->serial),
+                                      DisplayText::escaped(serial))
                           << Qt::endl;
             return ExitUsage;
         }
     } else {
         const std::optional<QVector<UnitRecord>> history = queries.history(serial, &error);
         if (!history) {
-            context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+            context.err() << tr("error: %1: %2")
+                                 .arg(DisplayText::escaped(db->url().displayText()),
+                                      DisplayText::escapedLines(error))
+                          << Qt::endl;
             return ExitCommunication;
         }
         if (history->isEmpty()) {
             context.err() << tr("error: no record of serial number %1 in %2")
-                                 .arg(serial, db->url().displayText())
+                                 .arg(DisplayText::escaped(serial),
+                                      DisplayText::escaped(db->url().displayText()))
                           << Qt::endl;
             return ExitInvalid;
         }
@@ -126,24 +135,28 @@ int EolCertificateCommand::run(CliContext& context, const QStringList& args)
             return ExitOk;
         }
         if (!OutputFile::write(path, json, &error)) {
-            context.err() << tr("error: %1").arg(error) << Qt::endl;
+            context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
             return ExitUsage;
         }
-        context.err() << tr("wrote %1").arg(path) << Qt::endl;
+        context.err() << tr("wrote %1").arg(DisplayText::escaped(path)) << Qt::endl;
         return ExitOk;
     }
     const QString file = path.isEmpty() ? defaultFile(record->serial) : path;
     const std::optional<QVector<UnitRecord>> earlier = queries.earlierOf(*record, &error);
     if (!earlier) {
-        context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+        context.err() << tr("error: %1: %2")
+                             .arg(DisplayText::escaped(db->url().displayText()),
+                                  DisplayText::escapedLines(error))
+                      << Qt::endl;
         return ExitCommunication;
     }
     if (!CertificatePdf::save(*record, file, &error, *earlier)) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitUsage;
     }
     context.out() << tr("wrote %1: serial number %2, %3, recorded %4")
-                         .arg(file, record->serial, CertificateHtml::verdictText(record->status),
+                         .arg(DisplayText::escaped(file), DisplayText::escaped(record->serial),
+                              CertificateHtml::verdictText(record->status),
                               UnitRecordJson::timeText(record->started))
                   << Qt::endl;
     return ExitOk;

@@ -2,6 +2,7 @@
 
 #include "cli/CliContext.h"
 #include "cli/ExitCode.h"
+#include "model/io/DisplayText.h"
 
 #include <QCoreApplication>
 #include <QSet>
@@ -91,7 +92,8 @@ int EolCommand::run(CliContext& context, const QStringList& args)
             context.err() << tr("error: name a subcommand: eol %1").arg(names()) << Qt::endl;
         else
             context.err() << tr("error: unknown subcommand \"eol %1\"; subcommands: %2")
-                                 .arg(args.mid(0, 2).join(QLatin1Char(' ')), names())
+                                 .arg(DisplayText::escaped(args.mid(0, 2).join(QLatin1Char(' '))),
+                                      names())
                           << Qt::endl;
         context.err() << tr("See \"opentop-cli help eol\".") << Qt::endl;
         return ExitUsage;

@@ -7,6 +7,7 @@
 #include "model/access/AccessCheck.h"
 #include "model/eol/RecipeChecker.h"
 #include "model/eol/ResultDatabase.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 
 #include <QJsonDocument>
@@ -57,7 +58,8 @@ int EolRecipeApproveCommand::run(CliContext& context, const QStringList& args)
     const QVector<RecipeProblem> problems =
         RecipeChecker(ProfileRegistry::builtIn()).check(loaded->recipe);
     if (!problems.isEmpty()) {
-        err << tr("%1: the recipe is not valid, so it cannot be approved:").arg(args.first())
+        err << tr("%1: the recipe is not valid, so it cannot be approved:")
+                   .arg(DisplayText::escaped(args.first()))
             << '\n';
         EolSupport::printProblems(context, problems);
         err.flush();
@@ -75,7 +77,9 @@ int EolRecipeApproveCommand::run(CliContext& context, const QStringList& args)
             .approveRecipe(*who, loaded->recipe.product, loaded->recipe.revision, loaded->checksum,
                            &approval);
     if (!d.allowed || !approval) {
-        err << tr("error: %1; the recipe was not approved").arg(d.message) << Qt::endl;
+        err << tr("error: %1; the recipe was not approved")
+                   .arg(DisplayText::escapedLines(d.message))
+            << Qt::endl;
         return ExitInvalid;
     }
     if (context.json()) {
@@ -92,8 +96,10 @@ int EolRecipeApproveCommand::run(CliContext& context, const QStringList& args)
         return ExitOk;
     }
     context.out() << tr("%1 rev. %2 approved by %3 (approval %4, checksum %5)")
-                         .arg(approval->recipeName, approval->revision, approval->approver,
-                              approval->id, approval->checksum)
+                         .arg(DisplayText::escaped(approval->recipeName),
+                              DisplayText::escaped(approval->revision),
+                              DisplayText::escaped(approval->approver), approval->id,
+                              approval->checksum)
                   << Qt::endl;
     return ExitOk;
 }

@@ -5,6 +5,7 @@
 #include "cli/ExitCode.h"
 #include "cli/FileCommandSupport.h"
 #include "model/eol/UnitValuesCsv.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -51,7 +52,10 @@ int EolRecipeCheckCommand::run(CliContext& context, const QStringList& args)
         QString error;
         const std::optional<UnitValuesCsv> csv = UnitValuesCsv::load(unitsPath, &error);
         if (!csv) {
-            context.err() << tr("error: %1 refused: %2").arg(unitsPath, error) << Qt::endl;
+            context.err() << tr("error: %1 refused: %2")
+                                 .arg(DisplayText::escaped(unitsPath),
+                                      DisplayText::escapedLines(error))
+                          << Qt::endl;
             return ExitInvalid;
         }
         // Per-unit values are only checked against a recipe that is itself right.
@@ -88,16 +92,20 @@ int EolRecipeCheckCommand::run(CliContext& context, const QStringList& args)
     if (!problems.isEmpty()) {
         context.err() << tr("%1 is not valid: %n problem(s); nothing may be run with it", nullptr,
                             int(problems.size()))
-                             .arg(path)
+                             .arg(DisplayText::escaped(path))
                       << Qt::endl;
     }
     if (!valid)
         return ExitInvalid;
     if (!context.json()) {
+        // The product and revision are the file's text, shown escaped (issue 28).
         context.out() << tr("valid: %1 revision %2: %3")
-                             .arg(recipe.product, recipe.revision, EolSupport::countsText(recipe));
+                             .arg(DisplayText::escaped(recipe.product),
+                                  DisplayText::escaped(recipe.revision),
+                                  EolSupport::countsText(recipe));
         if (!unitsPath.isEmpty())
-            context.out() << tr("; %n unit(s) of %1 checked", nullptr, unitsChecked).arg(unitsPath);
+            context.out() << tr("; %n unit(s) of %1 checked", nullptr, unitsChecked)
+                                 .arg(DisplayText::escaped(unitsPath));
         context.out() << Qt::endl;
     }
     return ExitOk;

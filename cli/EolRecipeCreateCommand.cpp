@@ -8,6 +8,7 @@
 #include "model/eol/RecipeBuilder.h"
 #include "model/eol/RecipeFile.h"
 #include "model/eol/RecipeFromDrives.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 #include "model/profile/Profile.h"
 #include "model/profile/ProfileRegistry.h"
@@ -72,7 +73,8 @@ std::optional<Recipe> EolRecipeCreateCommand::readGolden(CliContext& context,
         QString error;
         DeviceSession* session = context.session(id, &error);
         if (!session) {
-            context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;
+            context.err() << tr("error: %1; nothing written").arg(DisplayText::escapedLines(error))
+                          << Qt::endl;
             *exitCode = ExitCommunication;
             return std::nullopt;
         }
@@ -83,13 +85,14 @@ std::optional<Recipe> EolRecipeCreateCommand::readGolden(CliContext& context,
     RecipeFromDrives make(
         context.client(), ProfileRegistry::builtIn(),
         [&context](int id, QString* error) { return context.session(id, error); });
-    QObject::connect(
-        &make, &RecipeFromDrives::driveRead, &make, [&context](const DriveBatchReader::Drive& d) {
-            if (d.ok() && !context.json())
-                context.out()
-                    << tr("%1: %2 settings read").arg(d.read.device.title()).arg(d.read.parameters)
-                    << Qt::endl;
-        });
+    QObject::connect(&make, &RecipeFromDrives::driveRead, &make,
+                     [&context](const DriveBatchReader::Drive& d) {
+                         if (d.ok() && !context.json())
+                             context.out() << tr("%1: %2 settings read")
+                                                  .arg(DisplayText::escaped(d.read.device.title()))
+                                                  .arg(d.read.parameters)
+                                           << Qt::endl;
+                     });
     RecipeFromDrives::Result result;
     const bool completed = context.wait([&](std::function<void()> finish) {
         make.start(golden, product, revision, qEnvironmentVariable("USER"),
@@ -106,10 +109,10 @@ std::optional<Recipe> EolRecipeCreateCommand::readGolden(CliContext& context,
         return std::nullopt;
     }
     for (const QString& line : result.variants)
-        context.err() << tr("note: %1").arg(line) << Qt::endl;
+        context.err() << tr("note: %1").arg(DisplayText::escapedLines(line)) << Qt::endl;
     if (!result.recipe) {
         for (const QString& problem : result.problems)
-            context.err() << tr("error: %1").arg(problem) << Qt::endl;
+            context.err() << tr("error: %1").arg(DisplayText::escapedLines(problem)) << Qt::endl;
         for (int id : result.unknownVariants)
             context.err() << tr("give its variant with --variant %1=VARIANT").arg(id) << Qt::endl;
         context.err() << tr("nothing written") << Qt::endl;
@@ -129,7 +132,7 @@ bool EolRecipeCreateCommand::measure(CliContext& context, Recipe* recipe, double
     if (!context.parser().isSet(QStringLiteral("yes"))) {
         err << tr("Would run the golden unit through the recipe's steps:") << Qt::endl;
         for (const QString& line : motion)
-            err << QStringLiteral("  ") << line << Qt::endl;
+            err << QStringLiteral("  ") << DisplayText::escapedLines(line) << Qt::endl;
         err << tr("This turns motors: add --yes to run them. Nothing was run; nothing written.")
             << Qt::endl;
         *exitCode = ExitUsage;
@@ -137,14 +140,16 @@ bool EolRecipeCreateCommand::measure(CliContext& context, Recipe* recipe, double
     }
     err << tr("measuring the golden unit (Ctrl-C stops every motor):") << Qt::endl;
     for (const QString& line : motion)
-        err << QStringLiteral("  ") << line << Qt::endl;
+        err << QStringLiteral("  ") << DisplayText::escapedLines(line) << Qt::endl;
     GoldenLimits::Margin m;
     m.relative = margin / 100.0;
     GoldenMeasure run(context.client(), ProfileRegistry::builtIn(), *recipe, m);
-    QObject::connect(&run, &GoldenMeasure::phaseChanged, &run,
-                     [&err](int machineNumber, EolDriveRun::Phase, const QString& text) {
-                         err << tr("drive %1: %2").arg(machineNumber).arg(text) << Qt::endl;
-                     });
+    QObject::connect(
+        &run, &GoldenMeasure::phaseChanged, &run,
+        [&err](int machineNumber, EolDriveRun::Phase, const QString& text) {
+            err << tr("drive %1: %2").arg(machineNumber).arg(DisplayText::escapedLines(text))
+                << Qt::endl;
+        });
     QObject::connect(context.client(), &ModbusClient::connectionLost, &run,
                      [&run](const QString& why) { run.connectionLost(why); });
     GoldenMeasure::Outcome outcome;
@@ -167,9 +172,10 @@ bool EolRecipeCreateCommand::measure(CliContext& context, Recipe* recipe, double
     if (!finished)
         loop.exec();
     for (const QString& d : outcome.unconfirmedStops)
-        err << tr("WARNING: %1 is not confirmed stopped").arg(d) << Qt::endl;
+        err << tr("WARNING: %1 is not confirmed stopped").arg(DisplayText::escaped(d)) << Qt::endl;
     if (!outcome.ok) {
-        err << tr("error: %1; nothing written").arg(outcome.error) << Qt::endl;
+        err << tr("error: %1; nothing written").arg(DisplayText::escapedLines(outcome.error))
+            << Qt::endl;
         *exitCode = interrupted                                 ? ExitInterrupted
                     : outcome.record.status == UnitStatus::Fail ? ExitFail
                                                                 : ExitCommunication;
@@ -183,7 +189,7 @@ bool EolRecipeCreateCommand::measure(CliContext& context, Recipe* recipe, double
             context.out() << tr("  drive %1, step %2: %3")
                                  .arg(c.machineNumber)
                                  .arg(c.step + 1)
-                                 .arg(GoldenLimits::changeText(c))
+                                 .arg(DisplayText::escaped(GoldenLimits::changeText(c)))
                           << Qt::endl;
         limits->append(QJsonObject{{QStringLiteral("machineNumber"), c.machineNumber},
                                    {QStringLiteral("step"), c.step + 1},
@@ -203,7 +209,9 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
 {
     const QCommandLineParser& parser = context.parser();
     auto usage = [&](const QString& problem) {
-        context.err() << tr("error: %1; usage: eol %2").arg(problem, synopsis()) << Qt::endl;
+        context.err()
+            << tr("error: %1; usage: eol %2").arg(DisplayText::escapedLines(problem), synopsis())
+            << Qt::endl;
         return ExitUsage;
     };
     if (!args.isEmpty())
@@ -236,11 +244,14 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
         return usage(tr("give the recipe file to write with -o RECIPE"));
     if (QFileInfo::exists(path) && !QFileInfo(path).isDir() &&
         !parser.isSet(QStringLiteral("force"))) {
-        context.err() << tr("error: %1 exists; give --force to replace it").arg(path) << Qt::endl;
+        context.err()
+            << tr("error: %1 exists; give --force to replace it").arg(DisplayText::escaped(path))
+            << Qt::endl;
         return ExitUsage;
     }
     if (const QString problem = OutputFile::problem(path); !problem.isEmpty()) {
-        context.err() << tr("error: %1; nothing read").arg(problem) << Qt::endl;
+        context.err() << tr("error: %1; nothing read").arg(DisplayText::escapedLines(problem))
+                      << Qt::endl;
         return ExitUsage;
     }
 
@@ -268,14 +279,15 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
             return code;
     }
     if (!recipe) {
-        context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;
+        context.err() << tr("error: %1; nothing written").arg(DisplayText::escapedLines(error))
+                      << Qt::endl;
         return ExitInvalid;
     }
 
     const QVector<RecipeProblem> problems =
         RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
     if (!RecipeFile::save(*recipe, path, &error)) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitUsage;
     }
     if (context.json()) {
@@ -294,7 +306,8 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
                       {QStringLiteral("problems"), EolSupport::problemsJson(problems)}});
     } else {
         context.out() << tr("wrote %1: %2 revision %3, %4")
-                             .arg(path, recipe->product, recipe->revision,
+                             .arg(DisplayText::escaped(path), DisplayText::escaped(recipe->product),
+                                  DisplayText::escaped(recipe->revision),
                                   EolSupport::countsText(*recipe))
                       << Qt::endl;
         EolSupport::printProblems(context, problems);
@@ -302,7 +315,7 @@ int EolRecipeCreateCommand::run(CliContext& context, const QStringList& args)
     if (!problems.isEmpty()) {
         context.err() << tr("error: the recipe does not pass \"eol recipe check\": fix it, then "
                             "sign it with \"opentop-cli eol recipe sign %1\"")
-                             .arg(path)
+                             .arg(DisplayText::escaped(path))
                       << Qt::endl;
         return ExitInvalid;
     }

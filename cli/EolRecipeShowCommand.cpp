@@ -8,6 +8,8 @@
 #include "model/eol/CertificateHtml.h"
 #include "model/eol/RecipeFile.h"
 #include "model/eol/RecipeStepKinds.h"
+#include "model/eol/SerialRule.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -79,7 +81,9 @@ void EolRecipeShowCommand::printPosition(CliContext& context, const Recipe& reci
     const Profile* profile = ProfileRegistry::builtIn().family(position.family);
     out << '\n'
         << Recipe::positionText(index, position.machineNumber)
-        << (position.name.isEmpty() ? QString() : QStringLiteral(": ") + position.name) << '\n';
+        << (position.name.isEmpty() ? QString()
+                                    : QStringLiteral(": ") + DisplayText::escaped(position.name))
+        << '\n';
     if (position.settings.isEmpty()) {
         out << tr("  no settings") << '\n';
     } else {
@@ -121,11 +125,12 @@ void EolRecipeShowCommand::printPosition(CliContext& context, const Recipe& reci
         const RecipeStep& step = position.steps.at(i);
         out << QStringLiteral("  %1. %2\n")
                    .arg(i + 1)
-                   .arg(RecipeStepKinds::line(steps.at(i).toObject(), profile));
+                   .arg(DisplayText::escaped(
+                       RecipeStepKinds::line(steps.at(i).toObject(), profile)));
         if (step.type == RecipeStep::Type::Read && !step.equals.isEmpty())
             continue;
         for (const RecipeLimit& l : step.limits)
-            out << QStringLiteral("       %1\n").arg(limitText(profile, l));
+            out << QStringLiteral("       %1\n").arg(DisplayText::escaped(limitText(profile, l)));
     }
 }
 
@@ -165,9 +170,14 @@ int EolRecipeShowCommand::run(CliContext& context, const QStringList& args)
         return ExitOk;
     }
     QTextStream& out = context.out();
-    out << tr("%1, revision %2").arg(recipe.product, recipe.revision) << '\n';
+    // Every text of the file is shown escaped (issue 28): tables through TextTable, lines here.
+    out << tr("%1, revision %2")
+               .arg(DisplayText::escaped(recipe.product), DisplayText::escaped(recipe.revision))
+        << '\n';
     if (!recipe.description.isEmpty())
-        out << recipe.description << '\n';
+        out << DisplayText::escapedLines(recipe.description) << '\n';
+    // The pattern is checked text (SerialRule: no control characters), shown as it is.
+    out << tr("serial numbers: %1").arg(SerialRule::patternText(recipe)) << '\n';
     out << tr("checksum %1").arg(loaded->checksum) << "\n\n";
     TextTable positions({tr("position"), tr("machine number"), tr("name"), tr("family"),
                          tr("variants"), tr("firmware")});

@@ -5,6 +5,7 @@
 #include "cli/ExitCode.h"
 #include "cli/FileCommandSupport.h"
 #include "model/eol/RecipeFile.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -47,13 +48,14 @@ int EolRecipeSignCommand::run(CliContext& context, const QStringList& args)
             EolSupport::printProblems(context, problems);
         context.err() << tr("error: %1 does not pass check (%n problem(s)); not signed", nullptr,
                             int(problems.size()))
-                             .arg(path)
+                             .arg(DisplayText::escaped(path))
                       << Qt::endl;
         return ExitInvalid;
     }
     QString error;
     if (!loaded->signedOk && !RecipeFile::save(loaded->recipe, path, &error)) {
-        context.err() << tr("error: %1; not signed").arg(error) << Qt::endl;
+        context.err() << tr("error: %1; not signed").arg(DisplayText::escapedLines(error))
+                      << Qt::endl;
         return ExitUsage;
     }
     const QString checksum = RecipeFile::checksumOf(loaded->recipe);
@@ -65,11 +67,14 @@ int EolRecipeSignCommand::run(CliContext& context, const QStringList& args)
                       {QStringLiteral("changed"), !loaded->signedOk},
                       {QStringLiteral("checksum"), checksum}});
     else if (loaded->signedOk)
-        context.out() << tr("%1 is signed already (%2); nothing changed").arg(path, checksum)
+        context.out() << tr("%1 is signed already (%2); nothing changed")
+                             .arg(DisplayText::escaped(path), checksum)
                       << Qt::endl;
     else
         context.out() << tr("signed %1: %2 revision %3, %4")
-                             .arg(path, loaded->recipe.product, loaded->recipe.revision, checksum)
+                             .arg(DisplayText::escaped(path),
+                                  DisplayText::escaped(loaded->recipe.product),
+                                  DisplayText::escaped(loaded->recipe.revision), checksum)
                       << Qt::endl;
     return ExitOk;
 }

@@ -9,6 +9,7 @@
 #include "model/eol/ResultCsv.h"
 #include "model/eol/ResultDatabase.h"
 #include "model/eol/UnitRecordJson.h"
+#include "model/io/DisplayText.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -147,7 +148,7 @@ std::optional<ResultFilter> EolResultsCommand::filter(CliContext& context)
 {
     const QCommandLineParser& parser = context.parser();
     auto usage = [&](const QString& problem) {
-        context.err() << tr("error: %1").arg(problem) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(problem)) << Qt::endl;
         return std::nullopt;
     };
     ResultFilter f;
@@ -258,7 +259,10 @@ void EolResultsCommand::printYield(CliContext& context, const QVector<YieldRow>&
         ++versions[r.title()];
     for (const YieldRow& r : perRecipe)
         if (versions.value(r.title()) > 1)
-            out << "  " << tr("%1: checksum %2").arg(r.title(), r.checksum) << '\n';
+            out << "  "
+                << tr("%1: checksum %2")
+                       .arg(DisplayText::escaped(r.title()), DisplayText::escaped(r.checksum))
+                << '\n';
     out << '\n' << tr("Per shift") << '\n';
     table(perShift, true);
     auto reasons = [&](const QString& title, QMap<QString, int> YieldRow::*which) {
@@ -269,7 +273,9 @@ void EolResultsCommand::printYield(CliContext& context, const QVector<YieldRow>&
                 if (!any)
                     out << '\n' << title << '\n';
                 any = true;
-                out << QStringLiteral("  %1  %2: %3\n").arg(it.value(), 4).arg(r.title(), it.key());
+                out << QStringLiteral("  %1  %2: %3\n")
+                           .arg(it.value(), 4)
+                           .arg(DisplayText::escaped(r.title()), DisplayText::escaped(it.key()));
             }
         }
     };
@@ -288,10 +294,10 @@ int EolResultsCommand::output(CliContext& context, const QByteArray& csv)
     }
     QString error;
     if (!ResultCsv::save(path, csv, &error)) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitUsage;
     }
-    context.err() << tr("wrote %1").arg(path) << Qt::endl;
+    context.err() << tr("wrote %1").arg(DisplayText::escaped(path)) << Qt::endl;
     return ExitOk;
 }
 
@@ -299,9 +305,9 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
 {
     const QCommandLineParser& parser = context.parser();
     if (!args.isEmpty()) {
-        context.err()
-            << tr("error: unexpected argument \"%1\"; usage: eol %2").arg(args.first(), synopsis())
-            << Qt::endl;
+        context.err() << tr("error: unexpected argument \"%1\"; usage: eol %2")
+                             .arg(DisplayText::escaped(args.first()), synopsis())
+                      << Qt::endl;
         return ExitUsage;
     }
     const bool csv = parser.isSet(QStringLiteral("csv"));
@@ -324,9 +330,10 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
         const std::optional<ShiftPlan> given = ShiftPlan::parse(
             parser.value(QStringLiteral("shifts")), QTimeZone::systemTimeZone(), &error);
         if (!given) {
-            context.err()
-                << tr("error: --shifts %1: %2").arg(parser.value(QStringLiteral("shifts")), error)
-                << Qt::endl;
+            context.err() << tr("error: --shifts %1: %2")
+                                 .arg(DisplayText::escaped(parser.value(QStringLiteral("shifts"))),
+                                      DisplayText::escapedLines(error))
+                          << Qt::endl;
             return ExitUsage;
         }
         plan = *given;
@@ -342,7 +349,10 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
     if (yield) {
         const std::optional<YieldReport::Tables> tables = YieldReport::query(*db, *f, plan, &error);
         if (!tables) {
-            context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+            context.err() << tr("error: %1: %2")
+                                 .arg(DisplayText::escaped(db->url().displayText()),
+                                      DisplayText::escapedLines(error))
+                          << Qt::endl;
             return ExitCommunication;
         }
         const QVector<YieldRow>& perRecipe = tables->perRecipe;
@@ -369,7 +379,10 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
     const ResultQueries queries(*db);
     const std::optional<QVector<UnitRecord>> units = queries.find(*f, &error);
     if (!units) {
-        context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+        context.err() << tr("error: %1: %2")
+                             .arg(DisplayText::escaped(db->url().displayText()),
+                                  DisplayText::escapedLines(error))
+                      << Qt::endl;
         return ExitCommunication;
     }
     if (csv)
@@ -377,7 +390,10 @@ int EolResultsCommand::run(CliContext& context, const QStringList& args)
     // Each drive's variant and how it was known (read, probed, confirmed, assumed).
     QVector<UnitRecord> listed = *units;
     if (!queries.addDrives(&listed, &error)) {
-        context.err() << tr("error: %1: %2").arg(db->url().displayText(), error) << Qt::endl;
+        context.err() << tr("error: %1: %2")
+                             .arg(DisplayText::escaped(db->url().displayText()),
+                                  DisplayText::escapedLines(error))
+                      << Qt::endl;
         return ExitCommunication;
     }
     if (context.json()) {

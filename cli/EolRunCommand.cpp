@@ -12,8 +12,10 @@
 #include "model/eol/RecipeFile.h"
 #include "model/eol/ResultWriter.h"
 #include "model/eol/RetestPolicy.h"
+#include "model/eol/SerialRule.h"
 #include "model/eol/StationSafeState.h"
 #include "model/eol/UnitValuesCsv.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/station/UnitStartGate.h"
 #include "transport/ModbusClient.h"
@@ -161,7 +163,8 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
         err << tr("usage: opentop-cli eol %1").arg(synopsis()) << Qt::endl;
         return ExitUsage;
     }
-    const QString serial = parser.value(kSerial).trimmed();
+    // Exactly as given: SerialRule refuses "SN1 " rather than testing it as "SN1".
+    const QString serial = parser.value(kSerial);
     QString error;
     int code = ExitOk;
     const std::optional<EolSupport::LoadedRecipe> loaded =
@@ -173,19 +176,27 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     const QVector<RecipeProblem> problems =
         RecipeChecker(ProfileRegistry::builtIn()).check(*recipe);
     if (!problems.isEmpty()) {
-        err << tr("%1: the recipe is not valid; nothing was sent:").arg(args.first()) << '\n';
+        err << tr("%1: the recipe is not valid; nothing was sent:")
+                   .arg(DisplayText::escaped(args.first()))
+            << '\n';
         EolSupport::printProblems(context, problems);
         err.flush();
         return ExitInvalid;
     }
+    // Before the database is opened or the bus touched: a refused serial is recorded nowhere.
+    const QString badSerial = SerialRule::problem(serial, *recipe);
+    if (!badSerial.isEmpty()) {
+        err << tr("--serial: %1; nothing was sent").arg(badSerial) << Qt::endl;
+        return ExitInvalid;
+    }
     const auto values = unitValues(context, *recipe, serial, &error);
     if (!values) {
-        err << error << Qt::endl;
+        err << DisplayText::escapedLines(error) << Qt::endl;
         return ExitInvalid;
     }
     const auto asserted = assertedVariants(context, *recipe, &error);
     if (!asserted) {
-        err << error << Qt::endl;
+        err << DisplayText::escapedLines(error) << Qt::endl;
         return ExitUsage;
     }
 
@@ -204,13 +215,15 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     ResultWriter writer;
     const ResultWriter::Opened opened = writer.openAndWait(url, station);
     if (!opened.ok) {
-        err << tr("results database: %1; nothing was sent").arg(opened.error) << Qt::endl;
+        err << tr("results database: %1; nothing was sent")
+                   .arg(DisplayText::escapedLines(opened.error))
+            << Qt::endl;
         return ExitCommunication;
     }
     for (const StationLease::Leftover& left : opened.interrupted)
         err << tr("note: unit %1 (begun %2) was left unfinished by a station process that is "
                   "gone; it is now recorded as interrupted. Check that its motor is stopped.")
-                   .arg(left.serial, left.started)
+                   .arg(DisplayText::escaped(left.serial), left.started)
             << Qt::endl;
     if (opened.waiting > 0)
         err << tr("note: %1 result(s) kept on this station could not be sent to the results "
@@ -256,16 +269,18 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     };
     unit.retestPassed = [&](const RetestPolicy::Decision& d) {
         if (d.kind == RetestPolicy::Decision::Kind::NeedsTechnician)
-            err << tr("note: %1; tested again as --retest allows").arg(d.reason) << Qt::endl;
+            err << tr("note: %1; tested again as --retest allows")
+                       .arg(DisplayText::escapedLines(d.reason))
+                << Qt::endl;
         else if (!d.reason.isEmpty())
-            err << tr("note: %1").arg(d.reason) << Qt::endl;
+            err << tr("note: %1").arg(DisplayText::escapedLines(d.reason)) << Qt::endl;
     };
     QObject::connect(&gate, &UnitStartGate::safetyChanged, &gate, [&] {
         if (gate.isMakingSafe())
             return;
         for (const PositionSafety& p : gate.safety()) {
             if (p.worthSaying())
-                err << tr("station: %1").arg(p.summary()) << Qt::endl;
+                err << tr("station: %1").arg(DisplayText::escapedLines(p.summary())) << Qt::endl;
         }
     });
 
@@ -302,7 +317,8 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     switch (outcome.kind) {
     case UnitStartGate::Outcome::Kind::RetestRefused:
     case UnitStartGate::Outcome::Kind::NeedsTechnician:
-        err << tr("error: %1; nothing was sent").arg(outcome.message) << Qt::endl;
+        err << tr("error: %1; nothing was sent").arg(DisplayText::escapedLines(outcome.message))
+            << Qt::endl;
         if (outcome.kind == UnitStartGate::Outcome::Kind::NeedsTechnician)
             err << tr("a technician allows it with --retest") << Qt::endl;
         return ExitInvalid;

@@ -13,10 +13,10 @@ class Recipe;
 // [--value ID:NAME=VALUE]... [--variant ...] [--retest] [--user NAME]`: one unit through the
 // end-of-line station (EolRun), recorded in the results database. Progress as lines for people,
 // or one JSON object per line (--json) for a PLC or MES. Exit codes: 0 PASS, 5 FAIL, 6 station
-// error, 3 recipe or unit values not valid or the retest rules hold the serial back (nothing
-// sent), 1 communication lost or results database unusable, 4 a motor not confirmed stopped,
-// 130 interrupted. On a station with users: --user NAME (who may test units) and an approved
-// recipe, else 3 and nothing sent.
+// error, 3 recipe, serial (SerialRule: the recipe's serialPattern) or unit values not valid or
+// the retest rules hold the serial back (nothing sent), 1 communication lost or results database
+// unusable, 4 a motor not confirmed stopped, 130 interrupted. On a station with users: --user NAME
+// (who may test units) and an approved recipe, else 3 and nothing sent.
 class EolRunCommand : public EolSubcommand
 {
 public:

@@ -6,6 +6,7 @@
 #include "model/access/AccessCheck.h"
 #include "model/eol/Recipe.h"
 #include "model/eol/ResultWriter.h"
+#include "model/io/DisplayText.h"
 
 #include <QEventLoop>
 #include <functional>
@@ -49,7 +50,8 @@ std::optional<EolRunIdentity> EolRunIdentity::check(CliContext& context, ResultW
             error = tr("the results database is not open");
     });
     if (managed < 0) {
-        err << tr("results database: %1; nothing was sent").arg(error) << Qt::endl;
+        err << tr("results database: %1; nothing was sent").arg(DisplayText::escapedLines(error))
+            << Qt::endl;
         *code = ExitCommunication;
         return std::nullopt;
     }
@@ -96,18 +98,21 @@ std::optional<EolRunIdentity> EolRunIdentity::check(CliContext& context, ResultW
                          tr("run-units: recipe checksum %1 is not approved").arg(checksum));
     });
     if (!error.isEmpty()) {
-        err << tr("results database: %1; nothing was sent").arg(error) << Qt::endl;
+        err << tr("results database: %1; nothing was sent").arg(DisplayText::escapedLines(error))
+            << Qt::endl;
         *code = ExitCommunication;
         return std::nullopt;
     }
     if (!decision.allowed) {
-        err << tr("refused: %1; nothing was sent").arg(decision.message) << Qt::endl;
+        err << tr("refused: %1; nothing was sent").arg(DisplayText::escapedLines(decision.message))
+            << Qt::endl;
         *code = ExitInvalid;
         return std::nullopt;
     }
     if (!approval) {
         err << tr("refused: %1 Nothing was sent.")
-                   .arg(RecipeApprovals::draftText(recipe.product, recipe.revision))
+                   .arg(DisplayText::escapedLines(
+                       RecipeApprovals::draftText(recipe.product, recipe.revision)))
             << Qt::endl;
         *code = ExitInvalid;
         return std::nullopt;
@@ -116,7 +121,8 @@ std::optional<EolRunIdentity> EolRunIdentity::check(CliContext& context, ResultW
     identity.approvalId = approval->id;
     identity.approver = approval->approver;
     err << tr("%1 logged in; recipe approved by %2 (approval %3)")
-               .arg(identity.user, identity.approver, identity.approvalId)
+               .arg(DisplayText::escaped(identity.user), DisplayText::escaped(identity.approver),
+                    identity.approvalId)
         << Qt::endl;
     return identity;
 }

@@ -6,6 +6,7 @@
 #include "model/eol/ResultDatabase.h"
 #include "model/eol/ResultUrl.h"
 #include "model/files/BackupFile.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/Profile.h"
 
 #include <QDir>
@@ -47,7 +48,7 @@ EolSupport::loadRecipe(CliContext& context, const QString& path, bool allowUnsig
     if (problem.isEmpty() && !file.open(QIODevice::ReadOnly))
         problem = tr("cannot be read: %1").arg(file.errorString());
     if (!problem.isEmpty()) {
-        context.err() << tr("error: %1: %2").arg(path, problem) << Qt::endl;
+        context.err() << tr("error: %1: %2").arg(DisplayText::escaped(path), problem) << Qt::endl;
         *exitCode = ExitUsage;
         return std::nullopt;
     }
@@ -81,7 +82,10 @@ EolSupport::loadRecipe(CliContext& context, const QString& path, bool allowUnsig
         // Changed by hand and broken: what is broken helps more than the checksum.
         error = resignedError;
     }
-    context.err() << tr("error: %1 refused: %2").arg(path, error) << Qt::endl;
+    // The parser's message may quote the file's text.
+    context.err() << tr("error: %1 refused: %2")
+                         .arg(DisplayText::escaped(path), DisplayText::escapedLines(error))
+                  << Qt::endl;
     *exitCode = ExitInvalid;
     return std::nullopt;
 }
@@ -91,7 +95,7 @@ QString EolSupport::unsignedText(const QString& path)
     return tr("%1 was changed after OpenTOP wrote it (its checksum does not match), so no station "
               "runs it. Check it with \"opentop-cli eol recipe check %1\" and, when it is right, "
               "sign it with \"opentop-cli eol recipe sign %1\"")
-        .arg(path);
+        .arg(DisplayText::escaped(path));
 }
 
 QJsonArray EolSupport::problemsJson(const QVector<RecipeProblem>& problems)
@@ -106,7 +110,9 @@ QJsonArray EolSupport::problemsJson(const QVector<RecipeProblem>& problems)
 void EolSupport::printProblems(CliContext& context, const QVector<RecipeProblem>& problems)
 {
     for (const RecipeProblem& p : problems)
-        context.out() << tr("%1: %2").arg(p.path, p.message) << '\n';
+        context.out() << tr("%1: %2").arg(DisplayText::escaped(p.path),
+                                          DisplayText::escapedLines(p.message))
+                      << '\n';
     context.out().flush();
 }
 
@@ -168,7 +174,10 @@ std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, in
     QString error;
     const std::optional<ResultUrl> url = ResultUrl::parse(text, &error);
     if (!url) {
-        context.err() << tr("error: %1: %2").arg(from.isEmpty() ? text : from, error) << Qt::endl;
+        context.err() << tr("error: %1: %2")
+                             .arg(DisplayText::escaped(from.isEmpty() ? text : from),
+                                  DisplayText::escapedLines(error))
+                      << Qt::endl;
         *exitCode = ExitUsage;
         return nullptr;
     }
@@ -178,7 +187,7 @@ std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, in
         // Reading never makes a database: a wrong path would otherwise show an empty one.
         context.err() << tr("error: no results database at %1 (nothing recorded there yet); "
                             "name one with --db URL")
-                             .arg(url->path)
+                             .arg(DisplayText::escaped(url->path))
                       << Qt::endl;
         // A database that cannot be opened, like a junk file or a server that is not there
         // (docs/eol-results.md): exit 1.
@@ -187,7 +196,7 @@ std::unique_ptr<ResultDatabase> EolSupport::openDatabase(CliContext& context, in
     }
     std::unique_ptr<ResultDatabase> db = ResultDatabase::open(*url, &error);
     if (!db) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         *exitCode = ExitCommunication;
     }
     return db;

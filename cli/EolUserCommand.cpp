@@ -7,6 +7,7 @@
 #include "cli/TextTable.h"
 #include "model/access/AccessCheck.h"
 #include "model/eol/ResultDatabase.h"
+#include "model/io/DisplayText.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -105,7 +106,7 @@ int EolUserCommand::list(CliContext& context)
     QString error;
     const auto users = UserStore(*db).list(&error);
     if (!users) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     if (context.json()) {
@@ -164,7 +165,7 @@ int EolUserCommand::run(CliContext& context, const QStringList& args)
     QString error;
     const int managed = access.managed(&error);
     if (managed < 0) {
-        err << tr("error: %1").arg(error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     // Who does it: nobody for the first user; the user themselves by default for passwd.
@@ -177,8 +178,9 @@ int EolUserCommand::run(CliContext& context, const QStringList& args)
             return ExitUsage;
         actor = *who;
     } else if (m_action == Action::Passwd) {
-        const auto old = CliIdentity::password(context, "OPENTOP_PASSWORD",
-                                               tr("Present password for %1: ").arg(target), false);
+        const auto old = CliIdentity::password(
+            context, "OPENTOP_PASSWORD",
+            tr("Present password for %1: ").arg(DisplayText::escaped(target)), false);
         if (!old)
             return ExitUsage;
         actor = Identity{target, *old};
@@ -187,8 +189,9 @@ int EolUserCommand::run(CliContext& context, const QStringList& args)
     bool ok = false;
     switch (m_action) {
     case Action::Add: {
-        const auto pw = CliIdentity::password(context, "OPENTOP_NEW_PASSWORD",
-                                              tr("New password for %1: ").arg(target), true);
+        const auto pw = CliIdentity::password(
+            context, "OPENTOP_NEW_PASSWORD",
+            tr("New password for %1: ").arg(DisplayText::escaped(target)), true);
         if (!pw)
             return ExitUsage;
         StationUser user;
@@ -197,23 +200,26 @@ int EolUserCommand::run(CliContext& context, const QStringList& args)
         user.role = *role;
         ok = access.addUser(actor, user, *pw, &error, &refused);
         if (ok)
-            context.out() << tr("user %1 added as %2").arg(target, AccessPolicy::roleText(*role))
+            context.out() << tr("user %1 added as %2")
+                                 .arg(DisplayText::escaped(target), AccessPolicy::roleText(*role))
                           << Qt::endl;
         break;
     }
     case Action::Disable:
         ok = access.setActive(actor, target, false, &error, &refused);
         if (ok)
-            context.out() << tr("user %1 disabled").arg(target) << Qt::endl;
+            context.out() << tr("user %1 disabled").arg(DisplayText::escaped(target)) << Qt::endl;
         break;
     case Action::Passwd: {
-        const auto pw = CliIdentity::password(context, "OPENTOP_NEW_PASSWORD",
-                                              tr("New password for %1: ").arg(target), true);
+        const auto pw = CliIdentity::password(
+            context, "OPENTOP_NEW_PASSWORD",
+            tr("New password for %1: ").arg(DisplayText::escaped(target)), true);
         if (!pw)
             return ExitUsage;
         ok = access.setPassword(actor, target, *pw, &error, &refused);
         if (ok)
-            context.out() << tr("password of %1 changed").arg(target) << Qt::endl;
+            context.out() << tr("password of %1 changed").arg(DisplayText::escaped(target))
+                          << Qt::endl;
         break;
     }
     case Action::List:
@@ -221,7 +227,7 @@ int EolUserCommand::run(CliContext& context, const QStringList& args)
     }
     if (ok)
         return ExitOk;
-    err << tr("error: %1; nothing was changed").arg(error) << Qt::endl;
+    err << tr("error: %1; nothing was changed").arg(DisplayText::escapedLines(error)) << Qt::endl;
     return refused ? ExitInvalid : ExitCommunication;
 }
 

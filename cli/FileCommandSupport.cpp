@@ -2,6 +2,7 @@
 
 #include "cli/CliContext.h"
 #include "cli/ExitCode.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 
 #include <QCoreApplication>
@@ -31,14 +32,17 @@ std::optional<BackupFile> FileCommandSupport::load(CliContext& context, const QS
     else if (!info.isFile())
         problem = tr("is not a regular file (a device, FIFO or socket); name a backup file");
     if (!problem.isEmpty()) {
-        context.err() << tr("error: %1: %2").arg(path, problem) << Qt::endl;
+        context.err() << tr("error: %1: %2").arg(DisplayText::escaped(path), problem) << Qt::endl;
         *exitCode = ExitUsage;
         return std::nullopt;
     }
     QString error;
     std::optional<BackupFile> file = BackupFile::load(path, ProfileRegistry::builtIn(), &error);
     if (!file) {
-        context.err() << tr("error: %1 refused: %2").arg(path, error) << Qt::endl;
+        // The parser's message may quote the file's text.
+        context.err() << tr("error: %1 refused: %2")
+                             .arg(DisplayText::escaped(path), DisplayText::escapedLines(error))
+                      << Qt::endl;
         *exitCode = ExitInvalid;
     }
     return file;

@@ -2,6 +2,7 @@
 
 #include "cli/CliContext.h"
 #include "cli/TextTable.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ValueCodec.h"
 #include "model/session/DeviceSession.h"
 #include "transport/ModbusClient.h"
@@ -76,7 +77,7 @@ int GetCommand::run(CliContext& context, const QStringList& args)
         return runRaw(context, slave);
     DeviceSession* session = context.session(slave, &error);
     if (!session) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     const Profile& profile = session->profile();
@@ -206,7 +207,8 @@ int GetCommand::runRaw(CliContext& context, int slave)
         }))
         return ExitInterrupted;
     if (!result.ok()) {
-        context.err() << tr("error: %1").arg(result.errorText()) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(result.errorText()))
+                      << Qt::endl;
         return ExitCommunication;
     }
     if (context.json()) {

@@ -2,6 +2,7 @@
 
 #include "cli/CliContext.h"
 #include "cli/TextTable.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/profile/ValueCodec.h"
 #include "model/session/DeviceSession.h"
@@ -61,7 +62,7 @@ int GroupCheck::read(int target)
         return ExitOk; // a family without groups: the write reaches the target only
     const std::optional<BusDriveList> listed = m_context.busDrives(&error);
     if (!listed) {
-        m_context.err() << tr("error: %1").arg(error) << Qt::endl;
+        m_context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitUsage;
     }
     m_groups.addDrive(target);

@@ -2,6 +2,7 @@
 
 #include "cli/TerminalWidth.h"
 
+#include "model/io/DisplayText.h"
 #include "model/monitor/DeviceMonitor.h"
 #include "model/profile/RoleEvaluator.h"
 #include "model/profile/ValueCodec.h"
@@ -220,10 +221,11 @@ QStringList MonitorOutput::csvCells(const MonitorSample& sample) const
     return cells;
 }
 
-QString MonitorOutput::csvEscape(const QString& cell)
+QString MonitorOutput::csvEscape(const QString& text)
 {
-    if (!cell.contains(QLatin1Char(',')) && !cell.contains(QLatin1Char('"')) &&
-        !cell.contains(QLatin1Char('\n')))
+    // No control character, and no text a spreadsheet would compute (DisplayText::csvCell).
+    const QString cell = DisplayText::csvCell(text);
+    if (!cell.contains(QLatin1Char(',')) && !cell.contains(QLatin1Char('"')))
         return cell;
     QString quoted = cell;
     quoted.replace(QStringLiteral("\""), QStringLiteral("\"\""));

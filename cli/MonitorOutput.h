@@ -50,7 +50,8 @@ public:
     static QString timeText(const MonitorSample& sample);
     // ISO 8601 with milliseconds and the UTC offset: "2024-05-01T14:03:07.250+02:00".
     static QString isoTime(const QDateTime& time);
-    static QString csvEscape(const QString& cell);
+    // A CSV cell: DisplayText::csvCell(), quoted when it holds a comma or a quote.
+    static QString csvEscape(const QString& text);
 
 private:
     QString text(const Column& column, const MonitorSample& sample) const;

@@ -5,6 +5,7 @@
 #include "cli/TextTable.h"
 #include "model/bus/BusMemory.h"
 #include "model/bus/DriveName.h"
+#include "model/io/DisplayText.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -49,7 +50,7 @@ int NameCommand::run(CliContext& context, const QStringList& args)
     QString error;
     const QString key = context.busKey(&error);
     if (key.isEmpty()) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitUsage;
     }
     const QHash<int, QString> names = BusMemory::names(key);

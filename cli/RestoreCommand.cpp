@@ -6,6 +6,7 @@
 #include "cli/GroupCheck.h"
 #include "cli/TextTable.h"
 #include "model/files/BusRestore.h"
+#include "model/io/DisplayText.h"
 #include "model/session/DeviceSession.h"
 
 #include <QCoreApplication>
@@ -55,9 +56,9 @@ void RestoreCommand::printPlan(CliContext& context, const RestorePlan& plan, boo
                    .arg(plan.title)
             << '\n';
         if (!plan.reason.isEmpty())
-            out << plan.reason << '\n';
+            out << DisplayText::escapedLines(plan.reason) << '\n';
         for (const QString& note : plan.notes)
-            out << tr("note: %1").arg(note) << '\n';
+            out << tr("note: %1").arg(DisplayText::escapedLines(note)) << '\n';
         out.flush();
         return;
     }
@@ -93,9 +94,9 @@ void RestoreCommand::printPlan(CliContext& context, const RestorePlan& plan, boo
         out << trn("%n setting(s) already equal", plan.count(Item::Action::Keep)) << '\n';
     }
     if (!plan.reason.isEmpty())
-        out << plan.reason << '\n';
+        out << DisplayText::escapedLines(plan.reason) << '\n';
     for (const QString& note : plan.notes)
-        out << tr("note: %1").arg(note) << '\n';
+        out << tr("note: %1").arg(DisplayText::escapedLines(note)) << '\n';
     out.flush();
 }
 
@@ -134,13 +135,14 @@ int RestoreCommand::run(CliContext& context, const QStringList& args)
         const auto chosen =
             CliContext::parseIds(context.parser().value(QStringLiteral("ids")), &error);
         if (!chosen) {
-            context.err() << tr("error: --ids: %1").arg(error) << Qt::endl;
+            context.err() << tr("error: --ids: %1").arg(DisplayText::escapedLines(error))
+                          << Qt::endl;
             return ExitUsage;
         }
         for (int id : *chosen) {
             if (!file->device(id)) {
                 context.err() << tr("error: %1 holds no drive with machine number %2; it holds %3")
-                                     .arg(args.first())
+                                     .arg(DisplayText::escaped(args.first()))
                                      .arg(id)
                                      .arg(FileCommandSupport::idList(file->slaves()))
                               << Qt::endl;
@@ -160,7 +162,8 @@ int RestoreCommand::run(CliContext& context, const QStringList& args)
     for (int id : ids) {
         QString error;
         if (!context.session(id, &error)) {
-            context.err() << tr("error: %1; nothing written").arg(error) << Qt::endl;
+            context.err() << tr("error: %1; nothing written").arg(DisplayText::escapedLines(error))
+                          << Qt::endl;
             return ExitCommunication;
         }
         GroupCheck group(context);
@@ -178,9 +181,12 @@ int RestoreCommand::run(CliContext& context, const QStringList& args)
     if (!refusals.isEmpty()) {
         for (const RestorePlan& check : refusals) {
             drives << FileCommandSupport::planJson(check);
-            context.err() << tr("error: %1: %2").arg(check.title, check.reason) << Qt::endl;
+            context.err() << tr("error: %1: %2")
+                                 .arg(DisplayText::escaped(check.title),
+                                      DisplayText::escapedLines(check.reason))
+                          << Qt::endl;
             for (const QString& problem : check.problems)
-                context.err() << "  " << problem << Qt::endl;
+                context.err() << "  " << DisplayText::escapedLines(problem) << Qt::endl;
         }
         if (context.json())
             FileCommandSupport::printJson(context,

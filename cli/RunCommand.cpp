@@ -2,6 +2,7 @@
 
 #include "cli/CliContext.h"
 #include "cli/GroupCheck.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/run/GroupFollowers.h"
 #include "model/run/RunControl.h"
@@ -69,17 +70,17 @@ int RunCommand::run(CliContext& context, const QStringList& args)
     const int slave = ids->first();
     const std::optional<RunControl::Command> command = RunControl::parse(args.mid(1), &error);
     if (!command) {
-        err << tr("error: %1").arg(error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitUsage;
     }
     DeviceSession* session = context.session(slave, &error);
     if (!session) {
-        err << tr("error: %1").arg(error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     const RunControl::Plan plan = RunControl::plan(*session, *command);
     if (plan.failure != RunControl::Failure::None) {
-        err << tr("error: %1").arg(plan.error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(plan.error)) << Qt::endl;
         return exitCodeOf(plan.failure);
     }
     const bool confirmed = context.parser().isSet(QStringLiteral("yes"));
@@ -105,7 +106,7 @@ int RunCommand::run(CliContext& context, const QStringList& args)
             }))
             return ExitInterrupted;
         for (const QString& line : GroupFollowers::beforeLines(followers))
-            err << tr("note: %1").arg(line) << Qt::endl;
+            err << tr("note: %1").arg(DisplayText::escapedLines(line)) << Qt::endl;
     }
     if (refused == ExitOk)
         refused = group.confirm(slave, confirmed, ExitUsage);
@@ -141,7 +142,7 @@ int RunCommand::run(CliContext& context, const QStringList& args)
                        .arg(plan.description)
                 << '\n';
         else
-            err << tr("error: %1").arg(outcome.error) << '\n'
+            err << tr("error: %1").arg(DisplayText::escapedLines(outcome.error)) << '\n'
                 << (outcome.explanation.isEmpty() ? QString()
                                                   : outcome.explanation + QLatin1Char('\n'));
     }

@@ -5,6 +5,7 @@
 #include "cli/SetRaw.h"
 #include "cli/TextTable.h"
 #include "model/files/RestorePlan.h"
+#include "model/io/DisplayText.h"
 #include "model/profile/ValueCodec.h"
 #include "model/session/DeviceSession.h"
 #include "model/session/ParameterInitialiser.h"
@@ -31,7 +32,7 @@ QString tr(const char* text)
 void printRefusal(CliContext& context, const QStringList& problems)
 {
     for (const QString& p : problems)
-        context.err() << tr("error: %1").arg(p) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(p)) << Qt::endl;
     context.err() << tr("nothing was written") << Qt::endl;
 }
 
@@ -79,7 +80,7 @@ int SetCommand::run(CliContext& context, const QStringList& args)
     }
     DeviceSession* session = context.session(slave, &error);
     if (!session) {
-        context.err() << tr("error: %1").arg(error) << Qt::endl;
+        context.err() << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     const bool confirmed = context.parser().isSet(QStringLiteral("yes"));
@@ -88,7 +89,7 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         const int eq = arg.indexOf(QLatin1Char('='));
         if (const QString twice = set.add(arg.left(eq).trimmed(), arg.mid(eq + 1).trimmed());
             !twice.isEmpty()) {
-            context.err() << tr("error: %1").arg(twice) << Qt::endl;
+            context.err() << tr("error: %1").arg(DisplayText::escapedLines(twice)) << Qt::endl;
             return ExitUsage;
         }
     }
@@ -101,9 +102,11 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         }))
         return ExitInterrupted;
     for (const QString& c : plan.consequences)
-        context.err() << tr("warning: %1").arg(c) << Qt::endl;
+        context.err() << tr("warning: %1").arg(DisplayText::escapedLines(c)) << Qt::endl;
     if (plan.refusal == SettingsWrite::Refusal::Communication) {
-        context.err() << tr("error: %1").arg(plan.problems.join(QLatin1Char(' '))) << Qt::endl;
+        context.err()
+            << tr("error: %1").arg(DisplayText::escapedLines(plan.problems.join(QLatin1Char(' '))))
+            << Qt::endl;
         return ExitCommunication;
     }
     if (plan.refusal != SettingsWrite::Refusal::None) {
@@ -111,7 +114,7 @@ int SetCommand::run(CliContext& context, const QStringList& args)
         return ExitInvalid;
     }
     for (const QString& w : plan.warnings + plan.advice)
-        context.err() << tr("warning: %1").arg(w) << Qt::endl;
+        context.err() << tr("warning: %1").arg(DisplayText::escapedLines(w)) << Qt::endl;
     // Drives in the target's communication group execute the writes too, silently: each must
     // allow every value by its own profile and variant before anything is sent.
     GroupCheck group(context);

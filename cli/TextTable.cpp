@@ -1,6 +1,7 @@
 #include "cli/TextTable.h"
 
 #include "cli/TerminalWidth.h"
+#include "model/io/DisplayText.h"
 
 #include <QTextStream>
 #include <algorithm>
@@ -11,6 +12,8 @@ TextTable::TextTable(QStringList headers)
     : m_headers(std::move(headers))
     , m_right(m_headers.size(), false)
 {
+    for (QString& h : m_headers)
+        h = DisplayText::escaped(h);
 }
 
 void TextTable::setRightAligned(int column, bool right)
@@ -23,6 +26,10 @@ void TextTable::addRow(QStringList cells)
 {
     while (cells.size() < m_headers.size())
         cells << QString();
+    // Cells hold names, serials and reasons from files, drives and databases: a control in one
+    // would act on the terminal, a line break would break the table.
+    for (QString& c : cells)
+        c = DisplayText::escaped(c);
     m_rows << cells;
 }
 

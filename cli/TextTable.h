@@ -8,7 +8,8 @@ class QTextStream;
 
 namespace opentop {
 
-// Aligned columns for human output. Numbers are right-aligned when a column says so.
+// Aligned columns for human output. Numbers are right-aligned when a column says so. Every
+// header and cell is shown through DisplayText::escaped(): one line, no control characters.
 class TextTable
 {
 public:

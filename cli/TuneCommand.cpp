@@ -1,6 +1,7 @@
 #include "cli/TuneCommand.h"
 
 #include "cli/CliContext.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 #include "model/session/DeviceSession.h"
 #include "model/tuning/TuningRunner.h"
@@ -163,12 +164,12 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
     const int slave = ids->first();
     DeviceSession* session = context.session(slave, &error);
     if (!session) {
-        err << tr("error: %1").arg(error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitCommunication;
     }
     const std::optional<TuningSpec> spec = TuningSpec::of(session->profile(), &error);
     if (!spec) {
-        err << tr("error: %1").arg(error) << Qt::endl;
+        err << tr("error: %1").arg(DisplayText::escapedLines(error)) << Qt::endl;
         return ExitInvalid;
     }
     if (!p.isSet(QStringLiteral("yes"))) {
@@ -371,7 +372,7 @@ int TuneCommand::run(CliContext& context, const QStringList& args)
     if (p.isSet(QStringLiteral("csv"))) {
         QString why;
         if (!OutputFile::write(p.value(QStringLiteral("csv")), samplesCsv(result).toUtf8(), &why)) {
-            err << tr("error: %1").arg(why) << Qt::endl;
+            err << tr("error: %1").arg(DisplayText::escapedLines(why)) << Qt::endl;
             code = code == ExitOk ? ExitCommunication : code;
         }
     }

@@ -1,6 +1,7 @@
 #include "report/CertificatePdf.h"
 
 #include "model/eol/CertificateHtml.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 
 #include <QBuffer>
@@ -20,7 +21,9 @@ QByteArray CertificatePdf::pdf(const UnitRecord& record, const QVector<UnitRecor
     buffer.open(QIODevice::WriteOnly);
     {
         QPdfWriter writer(&buffer);
-        writer.setTitle(tr("End-of-line certificate %1").arg(record.serial));
+        // The serial as the page shows it (DisplayText), in the title and every footer.
+        const QString serial = DisplayText::escaped(record.serial);
+        writer.setTitle(tr("End-of-line certificate %1").arg(serial));
         writer.setCreator(QStringLiteral("OpenTOP " OPENTOP_VERSION));
         writer.setResolution(300);
         writer.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait,
@@ -52,7 +55,7 @@ QByteArray CertificatePdf::pdf(const UnitRecord& record, const QVector<UnitRecor
             painter.drawText(QRectF(0, body.height(), page.width(), footer),
                              Qt::AlignRight | Qt::AlignBottom,
                              tr("%1 · %2 · page %3 of %4")
-                                 .arg(record.serial, CertificateHtml::verdictText(record.status))
+                                 .arg(serial, CertificateHtml::verdictText(record.status))
                                  .arg(i + 1)
                                  .arg(pages));
         }

@@ -1,5 +1,6 @@
 #include "model/bus/DriveName.h"
 
+#include "model/io/DisplayText.h"
 #include "model/session/DeviceSession.h"
 
 #include <QRegularExpression>
@@ -17,7 +18,7 @@ QString DriveName::problem(const QString& name)
     if (kept.size() > kMaxLength)
         return tr("A machine's name has at most %1 characters; \"%2\" has %3.")
             .arg(kMaxLength)
-            .arg(kept.left(kMaxLength) + QChar(0x2026))
+            .arg(DisplayText::escaped(kept.left(kMaxLength)) + QChar(0x2026))
             .arg(kept.size());
     for (const QChar c : kept) {
         // Control characters and line or paragraph breaks would break a question, a list, a
@@ -39,28 +40,31 @@ QString DriveName::problem(const QString& name)
     return QString();
 }
 
+// Names and models are shown escaped (DisplayText): a name kept before names were checked, or a
+// backup file's name or model, may hold control characters.
 QString DriveName::text(int slave, const QString& name)
 {
     return name.isEmpty() ? tr("machine number %1").arg(slave)
-                          : tr("machine number %1 (%2)").arg(slave).arg(name);
+                          : tr("machine number %1 (%2)").arg(slave).arg(DisplayText::escaped(name));
 }
 
 QString DriveName::title(int slave, const QString& name)
 {
     return name.isEmpty() ? tr("Machine number %1").arg(slave)
-                          : tr("Machine number %1 (%2)").arg(slave).arg(name);
+                          : tr("Machine number %1 (%2)").arg(slave).arg(DisplayText::escaped(name));
 }
 
 QString DriveName::listed(int slave, const QString& name)
 {
-    return name.isEmpty() ? QString::number(slave) : QStringLiteral("%1 (%2)").arg(slave).arg(name);
+    return name.isEmpty() ? QString::number(slave)
+                          : QStringLiteral("%1 (%2)").arg(slave).arg(DisplayText::escaped(name));
 }
 
 QString DriveName::nameAndModel(const QString& name, const QString& model)
 {
     if (name.isEmpty() || model.isEmpty())
-        return name.isEmpty() ? model : name;
-    return QStringLiteral("%1, %2").arg(name, model);
+        return DisplayText::escaped(name.isEmpty() ? model : name);
+    return QStringLiteral("%1, %2").arg(DisplayText::escaped(name), DisplayText::escaped(model));
 }
 
 QString DriveName::withModel(int slave, const QString& name, const QString& model)

@@ -1,12 +1,16 @@
 #include "model/eol/CertificateHtml.h"
 
+#include "model/io/DisplayText.h"
+
 namespace opentop {
 
 namespace {
 
+// Every text on the certificate, the record's from stations, operators and recipes: control
+// characters and bidi overrides shown as escapes (DisplayText), then made safe for HTML.
 QString esc(const QString& text)
 {
-    return text.toHtmlEscaped();
+    return DisplayText::escaped(text).toHtmlEscaped();
 }
 
 // Seven significant digits for reading; the JSON certificate keeps every digit.

@@ -18,6 +18,11 @@ public:
     QString product;  // "Conveyor C-200"
     QString revision; // "B"
     QString description;
+    // The product's serial numbers (SerialRule): a regular expression the whole serial must
+    // match, "" for any; and one serial it matches, shown when a serial is refused. Absent from
+    // a file when empty, so that older recipes keep their checksums.
+    QString serialPattern;             // "^TR[0-9]{8}$"
+    QString serialExample;             // "TR00012345"
     QVector<RecipePosition> positions; // in fixture order
     RecipeRetest retest;               // absent from a file: the defaults
 

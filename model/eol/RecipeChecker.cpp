@@ -1,6 +1,7 @@
 #include "model/eol/RecipeChecker.h"
 
 #include "model/eol/RecipeStepChecker.h"
+#include "model/eol/SerialRule.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/profile/ValueCodec.h"
 #include "model/session/DependentValues.h"
@@ -95,6 +96,12 @@ QVector<RecipeProblem> RecipeChecker::check(const Recipe& recipe) const
         problems << RecipeProblem{QStringLiteral("revision"), tr("the recipe has no revision")};
     if (recipe.positions.isEmpty())
         problems << RecipeProblem{QStringLiteral("positions"), tr("the recipe names no drive")};
+    // The file's reader refuses these already; a recipe made in the program is asked here.
+    QString field;
+    const QString serialProblem =
+        SerialRule::recipeProblem(recipe.serialPattern, recipe.serialExample, &field);
+    if (!serialProblem.isEmpty())
+        problems << RecipeProblem{field, serialProblem};
     QHash<int, int> seen;
     for (int i = 0; i < recipe.positions.size(); ++i) {
         const int n = recipe.positions.at(i).machineNumber;

@@ -27,14 +27,15 @@ QByteArray scalar(const QJsonValue& value)
 QStringList orderedKeys(const QJsonObject& object)
 {
     static const char* const order[] = {
-        "format",        "formatVersion", "product",      "revision",     "description",
-        "machineNumber", "name",          "family",       "variants",     "variantProof",
-        "firmware",      "type",          "parameter",    "statistic",    "spno",
-        "speed",         "direction",     "target",       "tolerance",    "value",
-        "min",           "max",           "lower",        "upper",        "equals",
-        "unit",          "timeout",       "duration",     "deceleration", "margin",
-        "source",        "settings",      "unitValues",   "steps",        "limits",
-        "positions",     "maxAttempts",   "passedSerial", "retest",       "checksum"};
+        "format",        "formatVersion", "product",       "revision",    "description",
+        "serialPattern", "serialExample", "machineNumber", "name",        "family",
+        "variants",      "variantProof",  "firmware",      "type",        "parameter",
+        "statistic",     "spno",          "speed",         "direction",   "target",
+        "tolerance",     "value",         "min",           "max",         "lower",
+        "upper",         "equals",        "unit",          "timeout",     "duration",
+        "deceleration",  "margin",        "source",        "settings",    "unitValues",
+        "steps",         "limits",        "positions",     "maxAttempts", "passedSerial",
+        "retest",        "checksum"};
     QStringList keys;
     for (const char* k : order) {
         if (object.contains(QLatin1String(k)))
@@ -212,6 +213,9 @@ QJsonObject RecipeFile::toObject(const Recipe& recipe)
                      {QStringLiteral("revision"), recipe.revision},
                      {QStringLiteral("positions"), positions}};
     insertText(root, "description", recipe.description);
+    // Left out when empty (any serial), so that older files keep their checksums.
+    insertText(root, "serialPattern", recipe.serialPattern);
+    insertText(root, "serialExample", recipe.serialExample);
     // Left out when it is the default, so that older files keep their checksums.
     if (recipe.retest != RecipeRetest()) {
         QJsonObject retest{

@@ -3,6 +3,7 @@
 #include "model/eol/RecipeStepKinds.h"
 
 #include "model/eol/RecipeFile.h"
+#include "model/eol/SerialRule.h"
 #include "model/files/BackupFile.h"
 
 #include <QJsonArray>
@@ -58,7 +59,8 @@ std::optional<Recipe> RecipeParser::parse(const QByteArray& data, QString* error
     if (!onlyKeys(root, QStringLiteral("the recipe"),
                   {QStringLiteral("format"), QStringLiteral("formatVersion"),
                    QStringLiteral("product"), QStringLiteral("revision"),
-                   QStringLiteral("description"), QStringLiteral("positions"),
+                   QStringLiteral("description"), QStringLiteral("serialPattern"),
+                   QStringLiteral("serialExample"), QStringLiteral("positions"),
                    QStringLiteral("retest"), QStringLiteral("checksum")}))
         return refuse(m_error);
     if (root.contains(QStringLiteral("retest")) && !readRetest(root, &recipe.retest))
@@ -66,6 +68,8 @@ std::optional<Recipe> RecipeParser::parse(const QByteArray& data, QString* error
     if (!text(root, "product", QString(), &recipe.product, true) ||
         !text(root, "revision", QString(), &recipe.revision, true) ||
         !text(root, "description", QString(), &recipe.description, false))
+        return refuse(m_error);
+    if (!readSerialRule(root, &recipe))
         return refuse(m_error);
     QJsonArray positions;
     if (!array(root, "positions", QString(), &positions))
@@ -228,26 +232,23 @@ bool RecipeParser::readStep(const QJsonObject& o, const QString& at, RecipeStep*
         return true;
     }
     case RecipeStep::Type::Speed:
-        return onlyKeys(o, where, keys) &&
-               number(o, "speed", where, &step->speed) &&
+        return onlyKeys(o, where, keys) && number(o, "speed", where, &step->speed) &&
                text(o, "unit", where, &step->unit, false);
     case RecipeStep::Type::Start:
-        if (!onlyKeys(o, where, keys) ||
-            !text(o, "direction", where, &step->direction, true))
+        if (!onlyKeys(o, where, keys) || !text(o, "direction", where, &step->direction, true))
             return false;
         if (step->direction != QLatin1String("cw") && step->direction != QLatin1String("ccw"))
             return fail(tr("%1: \"direction\" must be \"cw\" or \"ccw\"").arg(where));
         return true;
     case RecipeStep::Type::WaitSpeed:
-        return onlyKeys(o, where, keys) &&
-               optionalNumber(o, "target", where, &step->target) &&
+        return onlyKeys(o, where, keys) && optionalNumber(o, "target", where, &step->target) &&
                number(o, "tolerance", where, &step->tolerance) &&
                text(o, "unit", where, &step->unit, false) &&
                number(o, "timeout", where, &step->timeout);
     case RecipeStep::Type::Hold: {
         QJsonArray limits;
-        if (!onlyKeys(o, where, keys) ||
-            !number(o, "duration", where, &step->duration) || !array(o, "limits", where, &limits))
+        if (!onlyKeys(o, where, keys) || !number(o, "duration", where, &step->duration) ||
+            !array(o, "limits", where, &limits))
             return false;
         for (int i = 0; i < limits.size(); ++i) {
             RecipeLimit l;
@@ -264,8 +265,7 @@ bool RecipeParser::readStep(const QJsonObject& o, const QString& at, RecipeStep*
                number(o, "margin", where, &step->margin);
     case RecipeStep::Type::Read: {
         RecipeLimit l;
-        if (!onlyKeys(o, where, keys) ||
-            !text(o, "parameter", where, &l.parameter, true) ||
+        if (!onlyKeys(o, where, keys) || !text(o, "parameter", where, &l.parameter, true) ||
             !text(o, "equals", where, &step->equals, false))
             return false;
         l.statistic = QStringLiteral("value");
@@ -303,6 +303,18 @@ bool RecipeParser::readLimit(const QJsonObject& o, const QString& at, bool withP
     if (!limit->lower && !limit->upper)
         return fail(tr("%1: a limit needs \"lower\", \"upper\" or both").arg(at));
     return true;
+}
+
+bool RecipeParser::readSerialRule(const QJsonObject& root, Recipe* recipe)
+{
+    // Given, each must say something: an empty pattern would read as "any serial".
+    if (!text(root, "serialPattern", QString(), &recipe->serialPattern,
+              root.contains(QStringLiteral("serialPattern"))) ||
+        !text(root, "serialExample", QString(), &recipe->serialExample,
+              root.contains(QStringLiteral("serialExample"))))
+        return false;
+    const QString why = SerialRule::recipeProblem(recipe->serialPattern, recipe->serialExample);
+    return why.isEmpty() || fail(why);
 }
 
 bool RecipeParser::readRetest(const QJsonObject& root, RecipeRetest* retest)

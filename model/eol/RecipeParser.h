@@ -22,6 +22,7 @@ public:
 private:
     bool checkHeader(const QJsonObject& root, QString* checksum);
     bool readRetest(const QJsonObject& root, RecipeRetest* retest);
+    bool readSerialRule(const QJsonObject& root, Recipe* recipe); // serialPattern, serialExample
     bool readPosition(const QJsonObject& o, int index, RecipePosition* position);
     bool readSetting(const QJsonObject& o, const QString& at, RecipeSetting* setting);
     bool readUnitValue(const QJsonObject& o, const QString& at, RecipeUnitValue* value);

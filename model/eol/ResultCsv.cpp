@@ -1,6 +1,7 @@
 #include "model/eol/ResultCsv.h"
 
 #include "model/eol/UnitRecordJson.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 
 namespace opentop {
@@ -27,9 +28,11 @@ QString ResultCsv::field(const QString& text)
 
 QByteArray ResultCsv::line(const QStringList& fields)
 {
+    // Serials, names and reasons come from stations and operators: no control character and no
+    // formula reaches a spreadsheet (DisplayText::csvCell); numbers such as -12.5 stay numbers.
     QStringList out;
     for (const QString& f : fields)
-        out.append(field(f));
+        out.append(field(DisplayText::csvCell(f)));
     return out.join(QLatin1Char(',')).toUtf8() + "\r\n";
 }
 

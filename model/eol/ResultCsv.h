@@ -24,6 +24,8 @@ public:
     static bool save(const QString& path, const QByteArray& csv, QString* error);
 
     static QString field(const QString& text); // quoted when it must be
+    // A record: each field made safe for a spreadsheet (DisplayText::csvCell: control
+    // characters escaped, a formula made text), then quoted when it must be.
     static QByteArray line(const QStringList& fields);
 };
 

@@ -1,4 +1,5 @@
 #include "model/eol/UnitValuesCsv.h"
+#include "model/io/DisplayText.h"
 #include "model/io/InputFile.h"
 
 #include "model/eol/Recipe.h"
@@ -11,6 +12,8 @@
 #include <cmath>
 
 namespace opentop {
+
+// Messages quote the file's text escaped (DisplayText): they are shown in terminals and windows.
 
 namespace {
 
@@ -97,7 +100,7 @@ std::optional<UnitValuesCsv> UnitValuesCsv::parse(const QByteArray& data, QStrin
             if (fields.first().compare(QLatin1String("serial"), Qt::CaseInsensitive) != 0)
                 return refuse(tr("line %1: the header must start with \"serial\", not \"%2\"")
                                   .arg(number)
-                                  .arg(fields.first().left(40)));
+                                  .arg(DisplayText::escaped(fields.first().left(40))));
             if (fields.size() < 2)
                 return refuse(tr("line %1: the header names no per-unit value").arg(number));
             if (fields.size() > kMaxColumns)
@@ -109,7 +112,7 @@ std::optional<UnitValuesCsv> UnitValuesCsv::parse(const QByteArray& data, QStrin
                 if (seen.contains(fields.at(c)))
                     return refuse(tr("line %1: column \"%2\" appears twice")
                                       .arg(number)
-                                      .arg(fields.at(c).left(80)));
+                                      .arg(DisplayText::escaped(fields.at(c).left(80))));
                 seen.insert(fields.at(c));
                 csv.m_columns << fields.at(c);
             }
@@ -125,7 +128,7 @@ std::optional<UnitValuesCsv> UnitValuesCsv::parse(const QByteArray& data, QStrin
             return refuse(tr("line %1: no serial number").arg(number));
         if (csv.m_rows.contains(serial))
             return refuse(tr("line %1: serial number \"%2\" is already on line %3")
-                              .arg(QString::number(number), serial.left(80),
+                              .arg(QString::number(number), DisplayText::escaped(serial.left(80)),
                                    QString::number(csv.m_lines.value(serial))));
         csv.m_rows.insert(serial, fields.mid(1));
         csv.m_lines.insert(serial, number);
@@ -186,7 +189,8 @@ UnitValuesCsv::valuesFor(const Recipe& recipe, const ProfileRegistry& registry,
     };
     const QString key = serial.trimmed();
     if (!m_rows.contains(key))
-        return refuse(tr("serial number \"%1\" is not in the CSV file").arg(key));
+        return refuse(
+            tr("serial number \"%1\" is not in the CSV file").arg(DisplayText::escaped(key)));
     const QStringList& cells = m_rows.value(key);
     const int line = m_lines.value(key);
     const RecipeChecker checker(registry);
@@ -210,7 +214,8 @@ UnitValuesCsv::valuesFor(const Recipe& recipe, const ProfileRegistry& registry,
             if (cell.isEmpty())
                 return refuse(tr("line %1, column \"%2\": no value for serial number \"%3\"")
                                   .arg(line)
-                                  .arg(m_columns.at(column), key));
+                                  .arg(DisplayText::escaped(m_columns.at(column)),
+                                       DisplayText::escaped(key)));
             bool ok = false;
             double v = QLocale::c().toDouble(cell, &ok);
             if (!ok && m_separator == QLatin1Char(';'))
@@ -219,7 +224,8 @@ UnitValuesCsv::valuesFor(const Recipe& recipe, const ProfileRegistry& registry,
             if (!ok || !std::isfinite(v))
                 return refuse(tr("line %1, column \"%2\": \"%3\" is not a number")
                                   .arg(line)
-                                  .arg(m_columns.at(column), cell.left(40)));
+                                  .arg(DisplayText::escaped(m_columns.at(column)),
+                                       DisplayText::escaped(cell.left(40))));
             const QString problem = checker.checkUnitValue(recipe, p.machineNumber, u.name, v);
             if (!problem.isEmpty())
                 return refuse(tr("line %1: %2").arg(QString::number(line), problem));

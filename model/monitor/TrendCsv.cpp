@@ -1,5 +1,6 @@
 #include "model/monitor/TrendCsv.h"
 
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 
 #include <QDateTime>
@@ -9,8 +10,10 @@ namespace opentop {
 
 namespace {
 
-QString quoted(QString text)
+// A header cell names a drive: made safe for a spreadsheet (DisplayText::csvCell), then quoted.
+QString quoted(const QString& cell)
 {
+    QString text = DisplayText::csvCell(cell);
     if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')))
         return text;
     return QLatin1Char('"') + text.replace(QLatin1Char('"'), QStringLiteral("\"\"")) +

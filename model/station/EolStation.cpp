@@ -3,6 +3,7 @@
 #include "model/access/StationAccess.h"
 #include "model/eol/ResultWriter.h"
 #include "model/eol/RetestPolicy.h"
+#include "model/eol/SerialRule.h"
 #include "model/eol/StationYield.h"
 #include "model/profile/ProfileRegistry.h"
 #include "transport/ModbusClient.h"
@@ -124,6 +125,12 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         *error = tr("open a recipe first");
         return false;
     }
+    // Before anything else: a refused serial reaches no audit trail, database or drive.
+    const QString badSerial = serialProblem(serial);
+    if (!badSerial.isEmpty()) {
+        *error = badSerial;
+        return false;
+    }
     const QString unrecorded = m_results->refusal(); // nothing is tested unless it is recorded
     if (!unrecorded.isEmpty()) {
         *error = unrecorded;
@@ -135,7 +142,7 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
         *error = refused;
         if (m_access->user())
             m_access->audit(QStringLiteral("refused"),
-                            tr("run-units: serial %1: %2").arg(serial.trimmed(), refused));
+                            tr("run-units: serial %1: %2").arg(serial, refused));
         return false;
     }
     if (!client) {
@@ -147,14 +154,10 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
                      .arg(m_gate->pendingSerial());
         return false;
     }
-    if (serial.trimmed().isEmpty()) {
-        *error = tr("no serial number");
-        return false;
-    }
     UnitStartGate::Unit unit;
     unit.recipe = m_recipe.recipe();
     EolRun::Options& options = unit.options;
-    options.serial = serial.trimmed();
+    options.serial = serial;
     options.station = m_station;
     options.operatorName = m_access->isManaged() ? m_access->operatorName() : m_operator;
     options.recipeChecksum = m_recipe.checksum();
@@ -193,6 +196,11 @@ bool EolStation::start(ModbusClient* client, TrafficLog* traffic, const QString&
             emit startRefused(o.serial, o.message);
     });
     return true;
+}
+
+QString EolStation::serialProblem(const QString& serial) const
+{
+    return SerialRule::problem(serial, m_recipe.recipe());
 }
 
 void EolStation::begin(EolRun* run, ModbusClient* client)

@@ -46,6 +46,9 @@ public:
         return m_recipe.loadUnitValues(path, error);
     }
     bool hasUnitValues() const { return m_recipe.hasUnitValues(); }
+    // Why `serial`, as scanned, may not be tested under the recipe (SerialRule); empty when it
+    // may. start() asks it too.
+    QString serialProblem(const QString& serial) const;
     // Per-unit values the operator types (the recipe's "operator" ones) for the next unit.
     QVector<QPair<int, RecipeUnitValue>> operatorValues() const
     {
@@ -74,7 +77,8 @@ public:
     StationAccess* access() const { return m_access; }
     void setTiming(const EolStepRunner::Timing& timing) { m_timing = timing; }
 
-    // Starts a unit: false with *error (and nothing sent) when no recipe, no database, a per-unit
+    // Starts a unit: false with *error (and nothing sent) when no recipe, a serial the recipe
+    // refuses (serialProblem(), taken exactly as given: not trimmed), no database, a per-unit
     // value missing or not allowed, or a unit already running. `typed`: the operator's values.
     // Then UnitStartGate: the retest rules (a retest that needs a technician only with
     // `retestBy`, who allowed it), the positions made safe, the unit begun: unitStarted(), or

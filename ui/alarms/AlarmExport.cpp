@@ -1,6 +1,7 @@
 #include "ui/alarms/AlarmExport.h"
 
 #include "model/bus/BusDrives.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 #include "model/session/DeviceSession.h"
 #include "ui/alarms/AlarmRecordsView.h"
@@ -11,9 +12,12 @@ namespace opentop {
 
 namespace {
 
-QString field(const QString& text)
+// A cell made safe for a spreadsheet (DisplayText::csvCell: no control character, no formula),
+// then quoted when it must be.
+QString field(const QString& cell)
 {
-    static const QString special = QStringLiteral(",\"\r\n");
+    const QString text = DisplayText::csvCell(cell);
+    static const QString special = QStringLiteral(",\"");
     bool quote = false;
     for (const QChar c : text)
         quote = quote || special.contains(c);

@@ -40,6 +40,7 @@ AlarmsPage::AlarmsPage(DeviceSession* session, QWidget* parent)
     // One arg(): a name is text, never a place for the model.
     m_title->setText(tr("Alarms and warnings of machine %1 (%2)")
                          .arg(DriveName::listed(session), modelOf(session)));
+    m_title->setTextFormat(Qt::PlainText); // the machine's name and model, as the drive has them
     QFont bold = m_title->font();
     bold.setBold(true);
     m_title->setFont(bold);
@@ -229,6 +230,7 @@ void AlarmsPage::confirm(const QString& title, const QString& text, const QStrin
 {
     auto* box = new QMessageBox(QMessageBox::Question, title, text,
                                 QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->setTextFormat(Qt::PlainText); // names the machine
     // A group parent's children execute the command too.
     const QString reach = GroupWriteCheck::reachText(m_session);
     box->setInformativeText(reach.isEmpty() ? details : details + QStringLiteral("\n\n") + reach);

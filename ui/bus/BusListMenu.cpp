@@ -5,6 +5,7 @@
 #include "ui/bus/BusPanel.h"
 #include "ui/bus/DriveLineDialog.h"
 #include "ui/bus/VariantMenu.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QInputDialog>
 #include <QLineEdit>
@@ -64,8 +65,9 @@ void BusListMenu::askName(int slave)
         if (!problem.isEmpty())
             label = problem + QStringLiteral("\n\n") + label;
         bool ok = false;
-        text = QInputDialog::getText(m_panel, tr("Name this machine"), label, QLineEdit::Normal,
-                                     text, &ok);
+        // The name as it is and as typed, quoted in the label and the problem.
+        text = QInputDialog::getText(m_panel, tr("Name this machine"), PlainText::asWritten(label),
+                                     QLineEdit::Normal, text, &ok);
         if (!ok)
             return;
         problem = m_drives->setName(slave, text);

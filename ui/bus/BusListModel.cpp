@@ -1,6 +1,7 @@
 #include "ui/bus/BusListModel.h"
 
 #include "model/profile/ProfileRegistry.h"
+#include "ui/widgets/PlainText.h"
 #include "ui/widgets/StaleLook.h"
 #include "ui/widgets/StatusLight.h"
 
@@ -235,8 +236,8 @@ QVariant BusListModel::data(const QModelIndex& index, int role) const
     switch (role) {
     case Qt::DisplayRole:
         return display(d, index.column());
-    case Qt::ToolTipRole:
-        return toolTip(d, index.column());
+    case Qt::ToolTipRole: // names and models as the drives have them
+        return PlainText::asWritten(toolTip(d, index.column()));
     case Qt::AccessibleTextRole:
         if (index.column() == Light)
             return toolTip(d, Light);

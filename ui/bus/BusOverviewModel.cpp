@@ -4,6 +4,7 @@
 #include "model/monitor/MonitorHub.h"
 #include "model/profile/RoleEvaluator.h"
 #include "model/session/DeviceSession.h"
+#include "ui/widgets/PlainText.h"
 #include "ui/widgets/StaleLook.h"
 
 #include <QBrush>
@@ -214,8 +215,10 @@ QVariant BusOverviewModel::data(const QModelIndex& index, int role) const
         return {};
     const Row& row = m_rows[index.row()];
     const int column = index.column();
-    if (role == Qt::DisplayRole || role == Qt::ToolTipRole)
+    if (role == Qt::DisplayRole)
         return row.text[column];
+    if (role == Qt::ToolTipRole) // a name or model as the drive has it
+        return PlainText::asWritten(row.text[column]);
     if (role == Qt::TextAlignmentRole && column >= Speed && column <= Load)
         return int(Qt::AlignRight | Qt::AlignVCenter);
     if (role == StaleRole)

@@ -88,6 +88,7 @@ BusPanel::BusPanel(BusDrives* drives, DriveStatusPoller* poller, QWidget* parent
     m_progress->setVisible(false);
     m_cancel->setVisible(false);
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // drives' names and models, errors
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_message);
     const FixedLineHint fixed = FixedLineHint::dcPotentiometer();

@@ -24,6 +24,7 @@ BusRecallBar::BusRecallBar(BusDrives* drives, const ConnectionSettings& settings
     setFrameShape(QFrame::StyledPanel);
     setStyleSheet(QStringLiteral("#busRecallBar { background: #e8f0fe; }"));
     m_text->setWordWrap(true);
+    m_text->setTextFormat(Qt::PlainText); // the drives' names
     auto* close = new BarHideButton(this);
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(8, 4, 4, 4);

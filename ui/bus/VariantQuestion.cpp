@@ -30,6 +30,7 @@ bool VariantQuestion::ensure(QWidget* parent, BusDrives* drives, int slave,
         VariantNeed::question(*drives, slave, purpose, drives->rememberedVariant(slave)),
         QMessageBox::NoButton, parent);
     box.setObjectName(QStringLiteral("variantQuestion"));
+    box.setTextFormat(Qt::PlainText); // names the drive
     QHash<QAbstractButton*, QString> variants;
     for (const ProfileVariant& v : profile.variants) {
         QPushButton* b = box.addButton(v.model, QMessageBox::AcceptRole);

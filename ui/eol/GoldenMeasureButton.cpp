@@ -5,6 +5,7 @@
 #include "model/eol/RecipeFile.h"
 #include "model/profile/ProfileRegistry.h"
 #include "transport/ModbusClient.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QJsonDocument>
 #include <QMessageBox>
@@ -18,8 +19,10 @@ namespace {
 void tell(QWidget* parent, QMessageBox::Icon icon, const QString& title, const QString& text,
           const QString& detail)
 {
+    // Errors, drives and limits quote the recipe's and the drives' texts.
     auto* box = new QMessageBox(icon, title, text, QMessageBox::Ok, parent);
-    box->setInformativeText(detail);
+    box->setTextFormat(Qt::PlainText);
+    box->setInformativeText(PlainText::asWritten(detail));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
 }
@@ -67,7 +70,8 @@ void GoldenMeasureButton::measure()
                                 tr("Run the golden unit through the recipe's steps? These motors "
                                    "turn:"),
                                 QMessageBox::Yes | QMessageBox::No, window());
-    ask->setInformativeText(GoldenMeasure::motionText(*recipe).join(QLatin1Char('\n')));
+    ask->setInformativeText(
+        PlainText::asWritten(GoldenMeasure::motionText(*recipe).join(QLatin1Char('\n'))));
     ask->setDefaultButton(QMessageBox::No);
     ask->button(QMessageBox::Yes)->setText(tr("Run the motors"));
     ask->setAttribute(Qt::WA_DeleteOnClose);
@@ -100,7 +104,8 @@ void GoldenMeasureButton::run(const Recipe& recipe)
             [run = m_run] { run->cancel(tr("stopped by the user")); });
     connect(m_run, &GoldenMeasure::phaseChanged, m_progress,
             [progress = m_progress](int machineNumber, EolDriveRun::Phase, const QString& text) {
-                progress->setLabelText(tr("Machine number %1: %2").arg(machineNumber).arg(text));
+                progress->setLabelText(
+                    PlainText::asWritten(tr("Machine number %1: %2").arg(machineNumber).arg(text)));
             });
     connect(drives->client(), &ModbusClient::connectionLost, m_run,
             [run = m_run](const QString& why) { run->connectionLost(why); });

@@ -1,6 +1,7 @@
 #include "ui/eol/IdentityDialog.h"
 
 #include "model/access/StationAccess.h"
+#include "model/io/DisplayText.h"
 
 #include <QDialogButtonBox>
 #include <QFormLayout>
@@ -35,6 +36,7 @@ IdentityDialog::IdentityDialog(StationAccess* access, Privilege privilege, const
     m_message = new QLabel(this);
     m_message->setObjectName(QStringLiteral("identityMessage"));
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // a refusal may quote a user's name
     m_message->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; font-weight: bold; }"));
     auto* form = new QFormLayout;
     form->addRow(tr("User name:"), m_user);
@@ -57,7 +59,7 @@ void IdentityDialog::check()
     auto answer = [this](const AccessDecision& d) {
         setEnabled(true);
         if (!d.allowed) {
-            m_message->setText(tr("Refused: %1").arg(d.message));
+            m_message->setText(tr("Refused: %1").arg(DisplayText::escapedLines(d.message)));
             m_password->setFocus();
             return;
         }

@@ -1,9 +1,11 @@
 #include "ui/eol/ProductionMode.h"
 
 #include "model/access/StationAccess.h"
+#include "model/io/DisplayText.h"
 #include "model/station/EolStation.h"
 #include "ui/eol/IdentityDialog.h"
 #include "ui/eol/ProductionView.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QAction>
 #include <QBoxLayout>
@@ -64,6 +66,7 @@ ProductionMode::ProductionMode(QMainWindow* window, QWidget* engineering, QBoxLa
                                         .arg(error),
                                     QMessageBox::Ok, m_window);
         box->setObjectName(QStringLiteral("resultsDatabaseWarning"));
+        box->setTextFormat(Qt::PlainText); // the database's own words
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
     });
@@ -164,11 +167,11 @@ bool ProductionMode::guard(const QString& what, std::function<void()> then)
 {
     if (!m_station->isRunning())
         return false;
-    const auto answer = QMessageBox::question(
+    const auto answer = PlainText::question(
         m_window, tr("A unit is being tested"),
         tr("Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is "
            "recorded as aborted.")
-            .arg(m_station->run()->record().serial, what),
+            .arg(DisplayText::escaped(m_station->run()->record().serial), what),
         QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
     if (answer != QMessageBox::Yes)
         return true;

@@ -3,12 +3,14 @@
 #include "ui/eol/VerdictLook.h"
 
 #include "model/access/StationAccess.h"
+#include "model/io/DisplayText.h"
 #include "model/station/EolStation.h"
 #include "ui/eol/EolSpeedChart.h"
 #include "ui/eol/IdentityDialog.h"
 #include "ui/eol/StationActions.h"
 #include "ui/eol/StationFigures.h"
 #include "ui/eol/StationLogin.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -54,6 +56,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     auto* openRecipe = new QPushButton(tr("Open recipe…"), this);
     auto* openValues = new QPushButton(tr("Per-unit values…"), this);
     m_database = new QLabel(this);
+    m_database->setTextFormat(Qt::PlainText); // the station's name, the database's address
     m_notice = new StationNotice(station, this);
     m_login = new StationLogin(station, this);
     auto* top = new QHBoxLayout;
@@ -72,6 +75,7 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
     m_verdict->setFont(VerdictLook::scaled(font(), 5.0, true));
     m_verdict->setMinimumHeight(m_verdict->fontMetrics().height() + 16);
     m_reason = new QLabel(this);
+    m_reason->setTextFormat(Qt::PlainText); // serials, names, reasons
     m_reason->setWordWrap(true);
     m_reason->setAlignment(Qt::AlignCenter);
     m_reason->setFont(VerdictLook::scaled(font(), 1.5));
@@ -153,8 +157,8 @@ ProductionView::ProductionView(EolStation* station, std::function<ModbusClient*(
         if (!m_station->run())
             return;
         const QString serial = m_station->run()->record().serial;
-        m_reason->setText(what.isEmpty() ? tr("Unit %1").arg(serial)
-                                         : tr("Unit %1: %2…").arg(serial, what));
+        m_reason->setText(DisplayText::escapedLines(
+            what.isEmpty() ? tr("Unit %1").arg(serial) : tr("Unit %1: %2…").arg(serial, what)));
     });
     showVerdict(VerdictLook::State::Ready, QString());
     refreshRecipe();
@@ -187,7 +191,7 @@ bool ProductionView::openRecipe(const QString& path)
 {
     QStringList problems;
     if (!m_station->loadRecipe(path, &problems)) {
-        QMessageBox::warning(
+        PlainText::warning(
             this, tr("Recipe not usable"),
             tr("%1 cannot be run; nothing will be sent:\n\n%2")
                 .arg(QDir::toNativeSeparators(path), problems.join(QLatin1Char('\n'))));
@@ -227,20 +231,22 @@ void ProductionView::chooseUnitValues()
         return;
     QString error;
     if (!m_station->loadUnitValues(path, &error))
-        QMessageBox::warning(this, tr("Per-unit values"), error);
+        PlainText::warning(this, tr("Per-unit values"), DisplayText::escapedLines(error));
     refreshRecipe();
 }
 
 void ProductionView::refreshRecipe()
 {
-    m_recipe->setText(m_station->hasRecipe()
-                          ? tr("<b>%1</b> rev. %2 — %n drive(s)", nullptr,
-                               int(m_station->recipe().positions.size()))
-                                .arg(m_station->recipe().product.toHtmlEscaped(),
-                                     m_station->recipe().revision.toHtmlEscaped())
-                          : tr("<i>none: open the product's recipe</i>"));
+    m_recipe->setText(
+        m_station->hasRecipe()
+            ? tr("<b>%1</b> rev. %2 — %n drive(s)", nullptr,
+                 int(m_station->recipe().positions.size()))
+                  .arg(DisplayText::escaped(m_station->recipe().product).toHtmlEscaped(),
+                       DisplayText::escaped(m_station->recipe().revision).toHtmlEscaped())
+            : tr("<i>none: open the product's recipe</i>"));
     m_database->setText(tr("Station %1 · results: %2 · per-unit values: %3")
-                            .arg(m_station->station(), m_station->databaseText(),
+                            .arg(DisplayText::escaped(m_station->station()),
+                                 DisplayText::escaped(m_station->databaseText()),
                                  m_station->hasUnitValues() ? tr("loaded") : tr("none")));
     m_entry->field()->setEnabled(m_station->hasRecipe() && !m_station->hasUnsavedResult());
 }
@@ -261,7 +267,9 @@ void ProductionView::showVerdict(VerdictLook::State state, const QString& reason
     m_verdict->setStyleSheet(
         QStringLiteral("QLabel { background: %1; color: white; border-radius: 6px; }")
             .arg(VerdictLook::colour(state)));
-    m_reason->setText(reason);
+    // Serials, reasons and names in it are the station's and the recipe's (DisplayText); the
+    // lines the program made stay lines.
+    m_reason->setText(DisplayText::escapedLines(reason));
 }
 
 void ProductionView::unitStarted(const QString& serial)
@@ -274,9 +282,10 @@ void ProductionView::unitStarted(const QString& serial)
         m_drives->insertRow(row);
         m_drives->setItem(
             row, 0,
-            new QTableWidgetItem(p.name.isEmpty()
-                                     ? tr("drive %1").arg(p.machineNumber)
-                                     : tr("drive %1 (%2)").arg(p.machineNumber).arg(p.name)));
+            new QTableWidgetItem(
+                p.name.isEmpty()
+                    ? tr("drive %1").arg(p.machineNumber)
+                    : tr("drive %1 (%2)").arg(p.machineNumber).arg(DisplayText::escaped(p.name))));
         m_drives->setItem(row, 1, new QTableWidgetItem(tr("waiting")));
         m_drives->item(row, 0)->setData(Qt::UserRole, p.machineNumber);
     }
@@ -291,7 +300,7 @@ void ProductionView::phaseChanged(int machineNumber, int, const QString& text)
 {
     for (int row = 0; row < m_drives->rowCount(); ++row)
         if (m_drives->item(row, 0)->data(Qt::UserRole).toInt() == machineNumber)
-            m_drives->item(row, 1)->setText(text);
+            m_drives->item(row, 1)->setText(DisplayText::escaped(text));
 }
 
 void ProductionView::unitFinished(const UnitRecord& record)
@@ -310,10 +319,11 @@ void ProductionView::unitFinished(const UnitRecord& record)
         showVerdictOf(record, reason);
     }
     if (!m_station->unconfirmedStops().isEmpty())
-        QMessageBox::critical(this, tr("Motor not confirmed stopped"),
-                              tr("These motors may still be turning; stop them before touching "
-                                 "the unit:\n\n%1")
-                                  .arg(m_station->unconfirmedStops().join(QLatin1Char('\n'))));
+        PlainText::critical(this, tr("Motor not confirmed stopped"),
+                            tr("These motors may still be turning; stop them before touching "
+                               "the unit:\n\n%1")
+                                .arg(DisplayText::escapedLines(
+                                    m_station->unconfirmedStops().join(QLatin1Char('\n')))));
     m_units->add(record, m_station->hasUnsavedResult()    ? UnitLog::Kept::NotRecorded
                          : m_station->lastResultSpooled() ? UnitLog::Kept::OnStation
                                                           : UnitLog::Kept::Recorded);

@@ -2,7 +2,9 @@
 
 #include "model/access/StationAccess.h"
 #include "model/eol/RecipeFile.h"
+#include "model/io/DisplayText.h"
 #include "ui/eol/IdentityDialog.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QDir>
 #include <QMessageBox>
@@ -29,7 +31,7 @@ void RecipeApproveButton::approve()
     const std::optional<Recipe> recipe =
         path.isEmpty() ? std::nullopt : RecipeFile::load(path, &error, &checksum);
     if (!recipe) {
-        QMessageBox::warning(
+        PlainText::warning(
             window(), tr("Approve recipe"),
             path.isEmpty()
                 ? tr("Save the recipe first: what is approved is the saved "
@@ -45,7 +47,9 @@ void RecipeApproveButton::approve()
     }
     auto* dialog = new IdentityDialog(
         m_access, Privilege::ApproveRecipe,
-        tr("approve %1 rev. %2").arg(recipe->product, recipe->revision), window());
+        tr("approve %1 rev. %2")
+            .arg(DisplayText::escaped(recipe->product), DisplayText::escaped(recipe->revision)),
+        window());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     const QString product = recipe->product;
     const QString revision = recipe->revision;
@@ -57,10 +61,11 @@ void RecipeApproveButton::approve()
         });
     connect(dialog, &IdentityDialog::granted, this,
             [this, product, revision](const AccessDecision& d) {
-                QMessageBox::information(
+                PlainText::information(
                     window(), tr("Approve recipe"),
                     tr("%1 rev. %2 is approved by %3: stations run it.")
-                        .arg(product, revision, d.user ? d.user->name : QString()));
+                        .arg(DisplayText::escaped(product), DisplayText::escaped(revision),
+                             DisplayText::escaped(d.user ? d.user->name : QString())));
             });
     dialog->open();
 }

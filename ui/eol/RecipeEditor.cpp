@@ -50,6 +50,7 @@ RecipeEditor::RecipeEditor(std::function<BusDrives*()> drives, QWidget* parent)
     m_verdict = new QLabel(this);
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // paths, errors quoting the recipe
     m_checkTimer = new QTimer(this);
     m_checkTimer->setSingleShot(true);
     m_checkTimer->setInterval(300);

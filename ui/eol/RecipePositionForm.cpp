@@ -120,6 +120,7 @@ RecipePositionForm::RecipePositionForm(QWidget* parent)
     m_machineNumber->setRange(1, 247);
     m_name = new QLineEdit(this);
     m_family = new QLabel(this);
+    m_family->setTextFormat(Qt::PlainText); // as the recipe file names it
     m_variants = new QLineEdit(this);
     m_variants->setPlaceholderText(tr("every variant of the family, e.g. dbu200, dbu400"));
     m_firmware = new QLineEdit(this);

@@ -6,6 +6,7 @@
 #include "model/profile/Profile.h"
 #include "ui/eol/RecipeLimitsTable.h"
 #include "ui/eol/RecipeNumberText.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -119,7 +120,7 @@ void RecipeStepsEditor::fillRow(int row)
     m_table->setItem(row, 0, fixedItem(QString::number(row + 1)));
     m_table->setItem(row, 1, fixedItem(typeText(step.value(kType).toString())));
     QTableWidgetItem* what = fixedItem(RecipeStepKinds::summary(step, m_profile));
-    what->setToolTip(what->text()); // whole, when the column is narrower
+    what->setToolTip(PlainText::asWritten(what->text())); // whole, when the column is narrower
     m_table->setItem(row, 2, what);
 }
 

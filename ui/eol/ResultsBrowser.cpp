@@ -7,6 +7,7 @@
 #include "model/eol/ResultUrl.h"
 #include "model/eol/ResultWriter.h"
 #include "model/eol/YieldReport.h"
+#include "model/io/DisplayText.h"
 #include "report/CertificatePdf.h"
 #include "ui/eol/ResultsFilterBar.h"
 #include "ui/widgets/ClearOfStopAll.h"
@@ -72,6 +73,7 @@ ResultsBrowser::ResultsBrowser(const QString& url, QWidget* parent)
     m_summary = new QLabel(this);
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // paths, the database's errors
 
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_table);
@@ -221,8 +223,9 @@ void ResultsBrowser::showFound(const YieldReport::Tables& tables)
             CertificateHtml::verdictText(u.status),
             ms < 0 ? tr("–") : QString::number(ms / 1000.0, 'f', 1),
             u.failureReason};
+        // Every cell from the database shown escaped: one line, no bidi override (DisplayText).
         for (int c = 0; c < ColumnCount; ++c)
-            m_table->setItem(row, c, new QTableWidgetItem(cells.at(c)));
+            m_table->setItem(row, c, new QTableWidgetItem(DisplayText::escaped(cells.at(c))));
         m_table->item(row, Verdict)->setBackground(verdictColour(u.status));
     }
     m_table->resizeColumnsToContents();
@@ -251,7 +254,8 @@ void ResultsBrowser::showSelected()
         emit detailsShown();
         return;
     }
-    m_details->setPlainText(tr("Reading unit %1…").arg(m_units.at(row).serial));
+    m_details->setPlainText(
+        tr("Reading unit %1…").arg(DisplayText::escaped(m_units.at(row).serial)));
     const QString id = m_units.at(row).id;
     const int generation = m_generation;
     struct Loaded
@@ -280,7 +284,7 @@ void ResultsBrowser::showSelected()
                 m_units.at(current).id != id)
                 return;
             if (!loaded->record) {
-                m_details->setPlainText(loaded->error);
+                m_details->setPlainText(DisplayText::escapedLines(loaded->error));
             } else {
                 m_selected = loaded->record;
                 m_selectedEarlier = loaded->earlier;
@@ -338,7 +342,7 @@ void ResultsBrowser::chooseCertificate()
 
 void ResultsBrowser::say(const QString& text, bool error)
 {
-    m_message->setText(text);
+    m_message->setText(DisplayText::escapedLines(text));
     m_message->setStyleSheet(error ? QStringLiteral("color: #b71c1c; font-weight: bold")
                                    : QString());
 }

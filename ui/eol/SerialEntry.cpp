@@ -3,6 +3,7 @@
 #include "model/profile/ProfileRegistry.h"
 #include "model/station/EolStation.h"
 #include "ui/eol/VerdictLook.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QApplication>
 #include <QHBoxLayout>
@@ -34,6 +35,7 @@ SerialEntry::SerialEntry(EolStation* station, std::function<ModbusClient*()> cli
     m_scanNote = new QLabel(this);
     m_scanNote->setObjectName(QStringLiteral("scanNote"));
     m_scanNote->setWordWrap(true);
+    m_scanNote->setTextFormat(Qt::PlainText); // scanned serials
     m_scanNote->setFont(VerdictLook::scaled(font(), 1.3, true));
     m_scanNote->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; }"));
     m_scanNote->hide();
@@ -55,11 +57,21 @@ void SerialEntry::unitStarted()
 
 void SerialEntry::start()
 {
-    const QString serial = m_serial->text().trimmed();
-    if (serial.isEmpty())
+    // Exactly as scanned: "SN1 " is refused (SerialRule), never quietly made into "SN1".
+    const QString serial = m_serial->text();
+    if (serial.trimmed().isEmpty())
         return;
     if (m_station->isRunning() || m_station->isStarting()) {
         refuseWhileTesting(serial);
+        return;
+    }
+    // Refused before the operator is asked for per-unit values; the field keeps the text to
+    // correct (EolStation::start() asks the same rule).
+    const QString refused = m_station->serialProblem(serial);
+    if (!refused.isEmpty()) {
+        QApplication::beep();
+        emit notStarted(tr("Serial number NOT taken: %1.").arg(refused));
+        m_serial->selectAll();
         return;
     }
     QHash<int, QHash<QString, double>> typed;
@@ -82,9 +94,16 @@ void SerialEntry::refuseWhileTesting(const QString& serial)
     const QString current =
         m_station->isRunning() ? m_station->run()->record().serial : m_station->startingSerial();
     QApplication::beep();
-    m_scanNote->setText(tr("Serial %1 was NOT taken: unit %2 is being tested. Scan it again "
-                           "once its verdict shows.")
-                            .arg(serial, current.isEmpty() ? tr("another") : current));
+    // A serial no recipe takes is not repeated on the screen (its control characters) and not
+    // worth scanning again: the rule says why.
+    const QString refused = m_station->serialProblem(serial);
+    m_scanNote->setText(
+        refused.isEmpty()
+            ? tr("Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its "
+                 "verdict shows.")
+                  .arg(serial, current.isEmpty() ? tr("another") : current)
+            : tr("A serial number was NOT taken: %1. Unit %2 is being tested.")
+                  .arg(refused, current.isEmpty() ? tr("another") : current));
     m_scanNote->show();
     m_serial->clear();
 }
@@ -98,14 +117,16 @@ bool SerialEntry::askOperatorValues(QHash<int, QHash<QString, double>>* typed)
                 profile = ProfileRegistry::builtIn().family(p.family);
         const ParameterMeta* meta = profile ? profile->parameter(value.name) : nullptr;
         bool ok = false;
-        const double v = QInputDialog::getDouble(this, tr("Per-unit value"),
-                                                 tr("Drive %1: %2 (%3–%4 %5)")
-                                                     .arg(machineNumber)
-                                                     .arg(meta ? meta->label : value.name)
-                                                     .arg(value.min)
-                                                     .arg(value.max)
-                                                     .arg(value.unit),
-                                                 value.min, value.min, value.max, 3, &ok);
+        // The name and unit may be the recipe's.
+        const double v =
+            QInputDialog::getDouble(this, tr("Per-unit value"),
+                                    PlainText::asWritten(tr("Drive %1: %2 (%3–%4 %5)")
+                                                             .arg(machineNumber)
+                                                             .arg(meta ? meta->label : value.name)
+                                                             .arg(value.min)
+                                                             .arg(value.max)
+                                                             .arg(value.unit)),
+                                    value.min, value.min, value.max, 3, &ok);
         if (!ok)
             return false;
         (*typed)[machineNumber][value.name] = v;

@@ -2,8 +2,10 @@
 
 #include "model/access/AccessPolicy.h"
 #include "model/access/StationAccess.h"
+#include "model/io/DisplayText.h"
 #include "model/station/EolStation.h"
 #include "ui/eol/IdentityDialog.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -24,6 +26,7 @@ StationActions::StationActions(EolStation* station, std::function<ModbusClient*(
 {
     setObjectName(QStringLiteral("stationActions"));
     m_text->setWordWrap(true);
+    m_text->setTextFormat(Qt::PlainText); // serials, reasons, drive texts
     for (QPushButton* b : {m_reset, m_retest}) {
         QFont f = b->font();
         f.setPointSizeF(f.pointSizeF() * 1.3);
@@ -76,7 +79,7 @@ StationActions::StationActions(EolStation* station, std::function<ModbusClient*(
         }
         if (user)
             access->audit(QStringLiteral("reset-alarm"),
-                          tr("serial %1").arg(m_station->lastSerial()));
+                          tr("serial %1").arg(DisplayText::escaped(m_station->lastSerial())));
         resetAlarms();
     });
     connect(m_retest, &QPushButton::clicked, this, [this] {
@@ -85,7 +88,7 @@ StationActions::StationActions(EolStation* station, std::function<ModbusClient*(
             // A technician (or higher) identifies themselves; the dialog audits it.
             IdentityDialog::ask(
                 access, Privilege::OverrideRetestLimit,
-                tr("test serial %1 again").arg(m_retestSerial), this,
+                tr("test serial %1 again").arg(DisplayText::escaped(m_retestSerial)), this,
                 [this](const AccessDecision& d) { retestBy(d.user ? d.user->name : QString()); });
             return;
         }
@@ -129,16 +132,17 @@ QString StationActions::whoAllows()
 {
     const QString name = m_operatorName();
     const QString who = name.isEmpty() ? tr("(no name)") : name;
-    const auto answer =
-        QMessageBox::question(this, tr("Test again"),
-                              tr("%1\n\nTest unit %2 again? It is recorded as allowed by %3.")
-                                  .arg(m_retestWhy, m_retestSerial, who));
+    const auto answer = PlainText::question(
+        this, tr("Test again"),
+        tr("%1\n\nTest unit %2 again? It is recorded as allowed by %3.")
+            .arg(DisplayText::escapedLines(m_retestWhy), DisplayText::escaped(m_retestSerial),
+                 DisplayText::escaped(who)));
     return answer == QMessageBox::Yes ? who : QString();
 }
 
 void StationActions::show(const QString& text, QPushButton* button)
 {
-    m_text->setText(text);
+    m_text->setText(DisplayText::escapedLines(text)); // quotes serials and reasons
     m_reset->setVisible(button == m_reset);
     m_retest->setVisible(button == m_retest);
     m_reset->setEnabled(true);

@@ -3,6 +3,7 @@
 #include "model/eol/StationYield.h"
 #include "model/eol/YieldReport.h"
 #include "model/station/EolStation.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QDateTime>
 
@@ -13,6 +14,7 @@ StationFigures::StationFigures(EolStation* station, QWidget* parent)
     , m_station(station)
 {
     setObjectName(QStringLiteral("stationFigures"));
+    setTextFormat(Qt::PlainText); // the results database's error
     connect(m_station->yield(), &StationYield::changed, this, &StationFigures::refresh);
     refresh();
 }
@@ -32,10 +34,12 @@ void StationFigures::refresh()
                 .arg(r.failed)
                 .arg(r.stationErrors)
                 .arg(YieldReport::yieldText(r)));
-    setToolTip(tr("This station, this recipe version, since %1 (read %2). The same figures: %3")
-                   .arg(y->shiftStart().toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
-                        y->readAt().toLocalTime().toString(QStringLiteral("HH:mm:ss")),
-                        y->commandLine()));
+    // The command line names the station and the recipe.
+    setToolTip(PlainText::asWritten(
+        tr("This station, this recipe version, since %1 (read %2). The same figures: %3")
+            .arg(y->shiftStart().toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
+                 y->readAt().toLocalTime().toString(QStringLiteral("HH:mm:ss")),
+                 y->commandLine())));
 }
 
 } // namespace opentop

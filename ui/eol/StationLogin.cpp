@@ -1,6 +1,7 @@
 #include "ui/eol/StationLogin.h"
 
 #include "model/access/StationAccess.h"
+#include "model/io/DisplayText.h"
 #include "model/station/EolStation.h"
 
 #include <QHBoxLayout>
@@ -71,6 +72,7 @@ StationLogin::StationLogin(EolStation* station, QWidget* parent)
     m_notice = new QLabel(parent);
     m_notice->setObjectName(QStringLiteral("accessNotice"));
     m_notice->setWordWrap(true);
+    m_notice->setTextFormat(Qt::PlainText); // the recipe's product, a refusal quoting a name
     m_notice->hide();
 
     connect(m_operator, &QLineEdit::textChanged, m_station, &EolStation::setOperatorName);
@@ -106,7 +108,7 @@ void StationLogin::logIn()
     m_station->access()->login(who, this, [this](const AccessDecision& d) {
         m_login->setEnabled(true);
         if (!d.allowed) {
-            m_notice->setText(tr("Not logged in: %1").arg(d.message));
+            m_notice->setText(tr("Not logged in: %1").arg(DisplayText::escapedLines(d.message)));
             m_notice->setStyleSheet(QStringLiteral(
                 "QLabel { background: #b3261e; color: white; padding: 4px; border-radius: 4px; "
                 "}"));
@@ -127,9 +129,9 @@ void StationLogin::refresh()
     const auto& user = access->user();
     m_pages->setCurrentIndex(!managed ? 0 : user ? 2 : 1);
     if (user)
-        m_who->setText(
-            tr("Logged in: <b>%1</b> (%2)")
-                .arg(user->displayName.toHtmlEscaped(), AccessPolicy::roleText(user->role)));
+        m_who->setText(tr("Logged in: <b>%1</b> (%2)")
+                           .arg(DisplayText::escaped(user->displayName).toHtmlEscaped(),
+                                AccessPolicy::roleText(user->role)));
     QString text;
     QString colour = QStringLiteral("#ffe08a; color: black");
     if (access->state() == StationAccess::State::Unmanaged) {
@@ -144,7 +146,7 @@ void StationLogin::refresh()
         m_notice->hide();
         return;
     }
-    m_notice->setText(text);
+    m_notice->setText(DisplayText::escapedLines(text)); // may name the recipe
     m_notice->setStyleSheet(
         QStringLiteral("QLabel { background: %1; padding: 4px; border-radius: 4px; }").arg(colour));
     m_notice->setVisible(!text.isEmpty());

@@ -1,5 +1,6 @@
 #include "ui/eol/StationNotice.h"
 
+#include "model/io/DisplayText.h"
 #include "model/station/EolStation.h"
 
 #include <QDateTime>
@@ -12,6 +13,7 @@ StationNotice::StationNotice(EolStation* station, QWidget* parent)
 {
     setObjectName(QStringLiteral("stationNotice"));
     setWordWrap(true);
+    setTextFormat(Qt::PlainText); // serials, database errors, recipe names
     setStyleSheet(QStringLiteral(
         "QLabel { background: #ffe08a; color: black; padding: 4px; border-radius: 4px; }"));
     hide();
@@ -45,7 +47,8 @@ void StationNotice::refresh()
         for (const PositionSafety& p : m_station->safety())
             if (p.worthSaying())
                 lines << p.summary();
-    setText(lines.join(QLatin1Char('\n')));
+    // Serials and errors from the database, names from the recipe: escaped, line by line.
+    setText(DisplayText::escapedLines(lines.join(QLatin1Char('\n'))));
     setVisible(!lines.isEmpty());
 }
 

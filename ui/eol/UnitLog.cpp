@@ -1,5 +1,7 @@
 #include "ui/eol/UnitLog.h"
 
+#include "model/io/DisplayText.h"
+
 #include <QHeaderView>
 
 namespace opentop {
@@ -33,7 +35,7 @@ void UnitLog::add(const UnitRecord& record, Kept kept)
     const QStringList cells{record.ended.toLocalTime().toString(QStringLiteral("HH:mm:ss")),
                             record.serial, verdict, record.failureReason};
     for (int c = 0; c < cells.size(); ++c)
-        setItem(0, c, new QTableWidgetItem(cells[c]));
+        setItem(0, c, new QTableWidgetItem(DisplayText::escaped(cells[c])));
     if (rowCount() > kMaxRows)
         removeRow(rowCount() - 1);
 }

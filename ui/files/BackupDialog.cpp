@@ -49,6 +49,7 @@ BackupDialog::BackupDialog(BusDrives* drives, const ConnectionSettings& connecti
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // paths, drives' names, errors
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_saveRead->setToolTip(tr("Save only the drives that were read; the others are left out"));
     m_saveRead->setEnabled(false);

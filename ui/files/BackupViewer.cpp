@@ -1,5 +1,6 @@
 #include "ui/files/BackupViewer.h"
 
+#include "model/io/DisplayText.h"
 #include "model/profile/ProfileRegistry.h"
 #include "ui/widgets/ClearOfStopAll.h"
 
@@ -24,6 +25,9 @@ BackupViewer::BackupViewer(QWidget* parent)
     m_header->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_header->setWordWrap(true);
     m_errorLabel->setWordWrap(true);
+    // The file's own texts (its tool, where it was read), and errors quoting it.
+    m_header->setTextFormat(Qt::PlainText);
+    m_errorLabel->setTextFormat(Qt::PlainText);
     m_errorLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_errorLabel->setStyleSheet(QStringLiteral("color: #c00000; font-weight: bold;"));
     m_errorLabel->hide();
@@ -112,7 +116,7 @@ void BackupViewer::fill()
             tr(", %1 bit/s, parity %2, %3 stop bit(s)").arg(c.baud).arg(c.parity).arg(c.stopBits);
     m_header->setText(
         tr("File: %1\nWritten by %2 on %3 (UTC)\nRead from: %4\nDrives: %5")
-            .arg(m_path, m_file->tool,
+            .arg(DisplayText::escaped(m_path), DisplayText::escaped(m_file->tool),
                  m_file->created.toUTC().toString(QStringLiteral("yyyy-MM-dd hh:mm:ss")), where)
             .arg(m_file->devices.size()));
     for (const BackupDevice& device : m_file->devices) {
@@ -121,9 +125,11 @@ void BackupViewer::fill()
         top->setText(Name, device.title());
         top->setText(Label,
                      tr("%1 %2, firmware %3")
-                         .arg(device.family,
-                              device.variant.isEmpty() ? tr("(variant unknown)") : device.variant,
-                              device.firmware));
+                         // The file's own texts (DisplayText).
+                         .arg(DisplayText::escaped(device.family),
+                              device.variant.isEmpty() ? tr("(variant unknown)")
+                                                       : DisplayText::escaped(device.variant),
+                              DisplayText::escaped(device.firmware)));
         top->setText(Value, tr("%n setting(s)", nullptr, int(device.parameters.size())));
         top->setData(Name, Qt::UserRole, device.slave);
         QFont bold = top->font(Name);

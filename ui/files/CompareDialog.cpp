@@ -66,6 +66,9 @@ CompareDialog::CompareDialog(BusDrives* drives, QWidget* parent)
     m_compare->setDefault(true);
     m_summary->setWordWrap(true);
     m_notes->setWordWrap(true);
+    // Errors and notes quote the files and the drives.
+    m_summary->setTextFormat(Qt::PlainText);
+    m_notes->setTextFormat(Qt::PlainText);
     m_notes->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     auto* tools = new QHBoxLayout;

@@ -54,6 +54,7 @@ RestoreDialog::RestoreDialog(BusDrives* drives, QWidget* parent)
     splitter->addWidget(m_table->withFilter()); // "Differences only" above the plan
 
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // paths, drives' names, errors quoting the file
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_progress->setVisible(false);
     m_previewButton->setToolTip(tr("Read the drives and show what would change; writes nothing"));

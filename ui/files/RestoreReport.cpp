@@ -1,6 +1,7 @@
 #include "ui/files/RestoreReport.h"
 
 #include "model/bus/DriveName.h"
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 
 #include <QDateTime>
@@ -64,7 +65,10 @@ QString RestoreReport::text(const QString& file, const QVector<RestorePlan>& pla
 
 QString RestoreReport::csv(const QVector<RestorePlan>& plans)
 {
-    auto quote = [](QString s) {
+    // Values, names and reasons come from the file and the drives: made safe for a
+    // spreadsheet (DisplayText::csvCell), then quoted.
+    auto quote = [](const QString& cell) {
+        QString s = DisplayText::csvCell(cell);
         s.replace(QLatin1Char('"'), QStringLiteral("\"\""));
         return QLatin1Char('"') + s + QLatin1Char('"');
     };

@@ -59,6 +59,7 @@ bool GroupWriteCheck::confirm(QWidget* parent, const BusGroupTracker* tracker,
     QMessageBox box(QMessageBox::Warning, tr("Communication group"), what + QLatin1Char('?'),
                     QMessageBox::NoButton, parent);
     box.setObjectName(QStringLiteral("groupWriteQuestion"));
+    box.setTextFormat(Qt::PlainText); // `what` names the drive
     box.setInformativeText(reached.join(QLatin1Char('\n')) + QLatin1Char('\n') +
                            tr("Their values are read back afterwards."));
     QPushButton* yes = box.addButton(tr("Send, also to %1").arg(BusGroups::andListText(children)),

@@ -1,6 +1,7 @@
 #include "ui/main/LinkBar.h"
 
 #include "ui/widgets/BarHideButton.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QAction>
 #include <QHBoxLayout>
@@ -18,6 +19,7 @@ LinkBar::LinkBar(QAction* reconnect, QWidget* parent)
     setFrameShape(QFrame::StyledPanel);
     m_text->setObjectName(QStringLiteral("linkBarText"));
     m_text->setWordWrap(true);
+    m_text->setTextFormat(Qt::PlainText); // the drives' models, the port's name
     m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_reconnect->setObjectName(QStringLiteral("linkBarReconnect"));
     m_reconnect->setDefaultAction(reconnect);
@@ -35,7 +37,8 @@ void LinkBar::say(const QString& text, Look look, const QString& details)
 {
     m_look = look;
     m_text->setText(text);
-    setToolTip(details.isEmpty() ? text : text + QStringLiteral("\n\n") + details);
+    setToolTip(
+        PlainText::asWritten(details.isEmpty() ? text : text + QStringLiteral("\n\n") + details));
     static const char* const colours[] = {"#fdecea", "#eef1f5", "#fff4e5"};
     setStyleSheet(QStringLiteral("#linkBar { background: %1; } #linkBarText { color: black; }")
                       .arg(QLatin1String(colours[int(look)])));

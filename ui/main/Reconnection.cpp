@@ -7,6 +7,7 @@
 #include "ui/bus/BusPanel.h"
 #include "ui/main/LinkBar.h"
 #include "ui/main/MainWindow.h"
+#include "ui/widgets/PlainText.h"
 #include "ui/workspace/DriveWorkspace.h"
 
 #include <QAction>
@@ -217,9 +218,11 @@ void Reconnection::lost(const QString& explanation)
     auto* box = new QMessageBox(QMessageBox::Warning, tr("Connection lost"),
                                 m_loss.headline() + QStringLiteral("\n\n") + explanation,
                                 QMessageBox::NoButton, m_window);
-    box->setInformativeText(
+    // The drives as they reported themselves (their models), the port as it is named.
+    box->setTextFormat(Qt::PlainText);
+    box->setInformativeText(PlainText::asWritten(
         m_loss.driveLines() +
-        (m_loss.leavesAnything() ? QStringLiteral("\n\n") + m_loss.whatToCheck() : QString()));
+        (m_loss.leavesAnything() ? QStringLiteral("\n\n") + m_loss.whatToCheck() : QString())));
     QPushButton* again = box->addButton(tr("Reconnect"), QMessageBox::AcceptRole);
     QPushButton* close = box->addButton(QMessageBox::Close);
     box->setDefaultButton(again);
@@ -258,7 +261,9 @@ void Reconnection::askLeaving(const QString& leaving, std::function<void()> proc
     // named with what to check on the machine.
     QMessageBox box(QMessageBox::Warning, tr("Connection lost"), m_loss.exitQuestion(leaving),
                     QMessageBox::NoButton, m_window);
-    box.setInformativeText(m_loss.driveLines() + QStringLiteral("\n\n") + m_loss.whatToCheck());
+    box.setTextFormat(Qt::PlainText);
+    box.setInformativeText(
+        PlainText::asWritten(m_loss.driveLines() + QStringLiteral("\n\n") + m_loss.whatToCheck()));
     QPushButton* again = box.addButton(tr("Reconnect"), QMessageBox::AcceptRole);
     QPushButton* leave = box.addButton(tr("Go on anyway"), QMessageBox::DestructiveRole);
     QPushButton* stay = box.addButton(tr("Cancel"), QMessageBox::RejectRole);

@@ -317,6 +317,7 @@ void RunningDataPage::initializeRow(int spno)
                         .arg(spno)
                         .arg(DriveName::listed(session)),
                     QMessageBox::Yes | QMessageBox::Cancel, this);
+    box.setTextFormat(Qt::PlainText); // names the drive
     box.setInformativeText(details);
     box.button(QMessageBox::Yes)->setText(tr("Initialize SPno%1").arg(spno));
     box.setDefaultButton(QMessageBox::Cancel); // a reset is never the default

@@ -11,6 +11,7 @@ CommandReadBack::CommandReadBack(QWidget* parent)
 {
     setTextInteractionFlags(Qt::TextSelectableByMouse);
     setWordWrap(true);
+    setTextFormat(Qt::PlainText); // the group's drives by their names
 }
 
 void CommandReadBack::readAfter(RunControl* control, DeviceSession* session,

@@ -4,6 +4,7 @@
 #include "model/bus/DriveStatusPoller.h"
 #include "model/run/ExitActions.h"
 #include "model/run/ExitCheck.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QHash>
 #include <QMessageBox>
@@ -82,8 +83,10 @@ void ExitGuard::ask(const QString& leaving, std::function<void()> proceed)
     }
     QMessageBox box(QMessageBox::Warning, plan.title(), plan.question(leaving),
                     QMessageBox::NoButton, m_window);
-    box.setInformativeText(plan.lines().join(QLatin1Char('\n')) + QStringLiteral("\n\n") +
-                           plan.explanation());
+    // The drives by their names.
+    box.setTextFormat(Qt::PlainText);
+    box.setInformativeText(PlainText::asWritten(plan.lines().join(QLatin1Char('\n')) +
+                                                QStringLiteral("\n\n") + plan.explanation()));
     QHash<QAbstractButton*, ExitPlan::Choice> buttons;
     for (ExitPlan::Choice choice : plan.choices()) {
         QPushButton* b = box.addButton(plan.label(choice), choice == ExitPlan::Choice::Leave
@@ -155,7 +158,7 @@ void ExitGuard::finish(const QString& action, const QStringList& failures,
     }
     QMessageBox box(QMessageBox::Critical, tr("Not every drive is safe"),
                     tr("Could not %1 every drive:").arg(action), QMessageBox::NoButton, m_window);
-    box.setInformativeText(failures.join(QLatin1Char('\n')));
+    box.setInformativeText(PlainText::asWritten(failures.join(QLatin1Char('\n')))); // names drives
     QPushButton* stay = box.addButton(tr("Stay connected"), QMessageBox::RejectRole);
     box.addButton(tr("Go on anyway"), QMessageBox::DestructiveRole);
     box.setDefaultButton(stay);

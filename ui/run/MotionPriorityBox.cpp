@@ -29,6 +29,7 @@ MotionPriorityBox::MotionPriorityBox(BusDrives* drives, DeviceSession* session, 
     auto* layout = new QVBoxLayout(this);
     m_text = new QLabel(this);
     m_text->setWordWrap(true);
+    m_text->setTextFormat(Qt::PlainText); // names the machine
     layout->addWidget(m_text);
     auto* button = new QPushButton(tr("Switch to communication priority…"), this);
     button->setObjectName(QStringLiteral("switchPriority"));

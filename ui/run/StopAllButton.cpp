@@ -144,6 +144,7 @@ void StopAllButton::showReport(const StopReport& report)
                                 title, m_reportText, QMessageBox::Close, window());
     if (!ok)
         box->setIcon(QMessageBox::Critical);
+    box->setTextFormat(Qt::PlainText); // the drives by their names
     box->setObjectName(QStringLiteral("stopAllResult"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setWindowModality(Qt::NonModal);

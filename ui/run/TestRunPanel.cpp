@@ -48,6 +48,7 @@ TestRunPanel::TestRunPanel(BusDrives* drives, int slave, QWidget* parent)
         new DriveHeading(drives, slave, tr("<b>Test run of machine number %1</b>"), this));
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // drives' names, the drive's answers
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     if (!m_session) {
         m_message->setText(tr("Machine number %1 has not been identified as a drive of a known "

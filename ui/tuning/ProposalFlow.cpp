@@ -91,6 +91,7 @@ void ProposalFlow::store()
                "as measured. Reject writes back the gains the drive had."),
         QMessageBox::No | QMessageBox::Yes | QMessageBox::Cancel, m_page);
     box->setObjectName(QStringLiteral("storeQuestion"));
+    box->setTextFormat(Qt::PlainText); // names the drive
     box->button(QMessageBox::No)->setText(tr("Reject the gains"));
     box->button(QMessageBox::Yes)->setText(tr("Store anyway"));
     box->setDefaultButton(QMessageBox::No);

@@ -1,5 +1,6 @@
 #include "ui/tuning/TuningRunCsv.h"
 
+#include "model/io/DisplayText.h"
 #include "model/io/OutputFile.h"
 
 #include "ui/tuning/TuningRun.h"
@@ -22,9 +23,11 @@ QString TuningRunCsv::text(const TuningRun& run, const QString& drive)
     const QString unit = r.speedUnit;
     QStringList lines;
     lines << QStringLiteral("# OpenTOP speed loop step test");
-    lines << QStringLiteral("# drive: %1").arg(drive);
+    // Names and messages on one comment line each, whatever they hold (DisplayText).
+    lines << QStringLiteral("# drive: %1").arg(DisplayText::escaped(drive));
     lines << QStringLiteral("# run: %1%2")
-                 .arg(run.title, run.isPrediction() ? QStringLiteral(" (predicted)") : QString());
+                 .arg(DisplayText::escaped(run.title),
+                      run.isPrediction() ? QStringLiteral(" (predicted)") : QString());
     lines << QStringLiteral("# step: %1 -> %2 %3").arg(number(r.from, 1), number(r.to, 1), unit);
     lines << QStringLiteral("# gains: P %1, I %2, D %3, D period %4 ms")
                  .arg(number(run.gains.p, 4), number(run.gains.i, 4), number(run.gains.d, 4))
@@ -39,10 +42,10 @@ QString TuningRunCsv::text(const TuningRun& run, const QString& drive)
                      .arg(number(m.steadyStateError, 2), unit);
         lines << QStringLiteral("# peak_current_A: %1").arg(number(m.peakCurrent, 3));
     } else if (!r.error.isEmpty()) {
-        lines << QStringLiteral("# error: %1").arg(r.error);
+        lines << QStringLiteral("# error: %1").arg(DisplayText::escaped(r.error));
     }
     if (!r.stopDetail.isEmpty())
-        lines << QStringLiteral("# stop: %1").arg(r.stopDetail);
+        lines << QStringLiteral("# stop: %1").arg(DisplayText::escaped(r.stopDetail));
     lines << QStringLiteral("t_ms,command_%1,speed_%1,current_A,output").arg(unit);
     for (const TuningSample& s : r.samples)
         lines << QStringLiteral("%1,%2,%3,%4,%5")

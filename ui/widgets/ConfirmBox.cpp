@@ -10,6 +10,7 @@ QMessageBox* ConfirmBox::ask(QWidget* parent, const QString& title, const QStrin
 {
     auto* box = new QMessageBox(QMessageBox::Warning, title, text,
                                 QMessageBox::Yes | QMessageBox::Cancel, parent);
+    box->setTextFormat(Qt::PlainText); // it names drives, as they are named
     box->button(QMessageBox::Yes)->setText(yes);
     box->setDefaultButton(QMessageBox::Cancel);
     box->setAttribute(Qt::WA_DeleteOnClose);

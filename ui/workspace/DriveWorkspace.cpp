@@ -42,6 +42,8 @@ DriveWorkspace::DriveWorkspace(QWidget* parent)
     titleFont.setPointSizeF(titleFont.pointSizeF() * 1.2);
     m_title->setFont(titleFont);
     m_title->setWordWrap(true); // a long model name wraps rather than widening the window
+    m_title->setTextFormat(Qt::PlainText);  // the machine's name and model, as the drive has them
+    m_status->setTextFormat(Qt::PlainText); // drives' names, errors
     layout->addWidget(m_title);
     layout->addWidget(m_tabs, 1);
     auto* row = new QHBoxLayout;

@@ -9,6 +9,7 @@
 #include "ui/bus/VariantQuestion.h"
 #include "ui/groups/GroupWriteCheck.h"
 #include "ui/widgets/ConfirmBox.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -89,6 +90,7 @@ MultiDriveWriteDialog::MultiDriveWriteDialog(BusDrives* drives, QVector<int> sla
     valueLabel->setBuddy(m_value);
     form->addRow(valueLabel, valueRow);
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // drives' names and models
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     buttons->addButton(m_write, QDialogButtonBox::ActionRole);
@@ -144,7 +146,7 @@ void MultiDriveWriteDialog::setCell(int slave, Column column, const QString& tex
         return;
     QTableWidgetItem* item = m_table->item(row, column);
     item->setText(text);
-    item->setToolTip(text);
+    item->setToolTip(PlainText::asWritten(text)); // a name or model as the drive has it
     item->setForeground(error ? QBrush(QColor(0xb0, 0x1c, 0x1c)) : QBrush());
 }
 

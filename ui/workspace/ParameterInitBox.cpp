@@ -7,6 +7,7 @@
 #include "transport/ModbusClient.h"
 #include "ui/groups/GroupWriteCheck.h"
 #include "ui/widgets/ConfirmBox.h"
+#include "ui/widgets/PlainText.h"
 
 #include <QLabel>
 #include <QMessageBox>
@@ -133,7 +134,7 @@ void ParameterInitBox::ask(const ParameterInitialiser::Plan& plan)
             m_confirmed = true;
             send();
         });
-    box->setInformativeText(details);
+    box->setInformativeText(PlainText::asWritten(details)); // names the drive
     // Cancel, Escape or closing the box: nothing is sent.
     connect(box, &QDialog::finished, this, [this] {
         if (m_confirmed)

@@ -539,3 +539,66 @@ TEST_F(MainWindowProductionTest, ARestartAfterAKillNamesTheUnitAndStopsTheMotorI
     EXPECT_EQ(view->unitsTable()->item(0, 2)->text(), QStringLiteral("PASS"))
         << qPrintable(view->reasonLabel()->text());
 }
+
+// Issue 28 item 5: the serial field refuses what the recipe's serialPattern does not match, and
+// whatever the recipe a serial with a terminal escape or white space at an end, saying why
+// where the operator looks (never repeating the escape); nothing is recorded, no motor turns; a
+// matching serial is tested.
+TEST_F(MainWindowProductionTest, TheSerialFieldRefusesSerialsTheRecipeDoesNotTake)
+{
+    QTemporaryDir dir;
+    QString db;
+    ASSERT_TRUE(enterProduction(dir, &db));
+    ProductionView* view = window->production()->view();
+    QString error;
+    std::optional<Recipe> recipe = RecipeFile::load(recipeFile(dir, 1), &error);
+    ASSERT_TRUE(recipe) << qPrintable(error);
+    recipe->serialPattern = QStringLiteral("^C200-[0-9]{4}$");
+    recipe->serialExample = QStringLiteral("C200-0001");
+    const QString path = dir.filePath(QStringLiteral("c200.json"));
+    ASSERT_TRUE(RecipeFile::save(*recipe, path, &error)) << qPrintable(error);
+    ASSERT_TRUE(view->openRecipe(path));
+
+    QTest::keyClicks(view->serialField(), QStringLiteral("SN-W9"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("NOT STARTED"));
+    EXPECT_TRUE(view->reasonLabel()->text().contains(
+        QStringLiteral("serial number \"SN-W9\" does not match the recipe's serial pattern "
+                       "^C200-[0-9]{4}$ (e.g. C200-0001)")))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_EQ(view->serialField()->text(), QStringLiteral("SN-W9")) << "kept to correct";
+
+    view->serialField()->setText(QStringLiteral("C200-0042\x1b]0;owned\a"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    EXPECT_EQ(view->verdictLabel()->text(), QStringLiteral("NOT STARTED"));
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("control characters")) &&
+                view->reasonLabel()->text().contains(QStringLiteral("U+001B")))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_FALSE(view->reasonLabel()->text().contains(QChar(0x1b)));
+
+    view->serialField()->setText(QStringLiteral("C200-0042 "));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    EXPECT_TRUE(view->reasonLabel()->text().contains(QStringLiteral("white space")))
+        << qPrintable(view->reasonLabel()->text());
+    EXPECT_FALSE(window->production()->station()->isRunning() ||
+                 window->production()->station()->isStarting());
+    EXPECT_EQ(speedOf(1), 0);
+    EXPECT_EQ(view->unitsTable()->rowCount(), 0);
+
+    view->serialField()->clear();
+    QTest::keyClicks(view->serialField(), QStringLiteral("C200-0042"));
+    QTest::keyClick(view->serialField(), Qt::Key_Return);
+    ASSERT_TRUE(
+        waitFor([&] { return view->verdictLabel()->text() == QLatin1String("PASS"); }, 30000))
+        << qPrintable(view->reasonLabel()->text());
+    const auto database = ResultDatabase::open(db, &error);
+    ASSERT_TRUE(database) << qPrintable(error);
+    for (const char* refused : {"SN-W9", "C200-0042 "}) {
+        const auto history = ResultQueries(*database).history(QString::fromLatin1(refused), &error);
+        ASSERT_TRUE(history) << qPrintable(error);
+        EXPECT_TRUE(history->isEmpty()) << refused;
+    }
+    const auto tested = ResultQueries(*database).history(QStringLiteral("C200-0042"), &error);
+    ASSERT_TRUE(tested && tested->size() == 1) << qPrintable(error);
+    EXPECT_EQ(tested->first().status, UnitStatus::Pass);
+}
