@@ -86,107 +86,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="70"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="71"/>
         <source>not read</source>
         <translation>未読出し</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="90"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="92"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="93"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="95"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="96"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="98"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="99"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="105"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="106"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="109"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="110"/>
         <source>%1: no records.</source>
         <translation>%1: 履歴なし。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="112"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="113"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: %3 件中 %2 件（新しい順）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>#</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Panel</source>
         <translation>パネル表示</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="124"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="125"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="131"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Cause: %1</source>
         <translation>原因: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="133"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>Remedy: %1</source>
         <translation>対策: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="135"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="136"/>
         <source>To clear: %1</source>
         <translation>解除方法: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="141"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="142"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通信エラーレジスタ (%1): 読み出せません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="145"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="146"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通信エラーレジスタ (%1): なし (0)。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="148"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="149"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通信エラーレジスタ (%1): %2（既知のコードではありません）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="152"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="153"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -195,57 +195,57 @@
   対策: %5</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>機械可読な JSON を標準出力に出力します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="28"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>送受信したすべてのフレームを標準エラー出力に表示します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="30"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>機種を通知しないドライバの機種: VARIANT、または ID=VARIANT,...（例: dbu400、150=dbu400）。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="32"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="34"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>バス上のドライバ。例: 1,3,5-7（既定: OPENTOP_BUS_DRIVES、なければこの接続の前回のスキャンで見つかったドライバ）。書込みやコマンドの前に通信グループを読み出し、同時に届くすべてのドライバを示します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="37"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
         <translation>バス上のドライバが不明でも（--bus-drives なし、この接続のスキャンなし）、通信グループの親になりうるドライバに書込み・コマンドを行います。グループ内のドライバも名前を示されないまま実行します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="42"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>このヘルプを表示します。コマンドの後に付けるとそのコマンドのヘルプを表示します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="44"/>
         <source>Show the version.</source>
         <translation>バージョンを表示します。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="47"/>
+        <location filename="../cli/CliApp.cpp" line="48"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>人が読む出力の言語: en、zh_TW、zh_CN、ko、ja (既定: システムの言語)。--json の出力はどの言語でも同じです。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="49"/>
+        <location filename="../cli/CliApp.cpp" line="50"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -410,19 +410,29 @@
         <translation> ほか %1 件</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="27"/>
+        <location filename="../cli/TuneCommand.cpp" line="28"/>
         <source>not reached</source>
         <translation>未到達</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <location filename="../cli/SetCommand.cpp" line="36"/>
         <source>nothing was written</source>
         <translation>何も書き込んでいません</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="60"/>
+        <source>NOT RECORDED (%1)</source>
+        <translation>未記録（%1）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="62"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（このステーションに保管）</translation>
     </message>
 </context>
 <context>
@@ -689,89 +699,89 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Kind</source>
         <translation>種別</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Record</source>
         <translation>履歴</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Code</source>
         <translation>コード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine name</source>
         <translation>機械名</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Panel code</source>
         <translation>パネル表示コード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cleared by</source>
         <translation>解除方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Remedy</source>
         <translation>対策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="54"/>
         <source>alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="55"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="63"/>
         <source>unknown code</source>
         <translation>不明なコード</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="105"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="109"/>
         <source>machine %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/alarms/AlarmExport.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="132"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>%1 台のドライバの履歴 %n 件を %2 に書き込みました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="133"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="137"/>
         <source>Not everything could be read: %1</source>
         <translation>一部を読み出せませんでした: %1</translation>
     </message>
@@ -974,92 +984,92 @@ Remedy: %5</source>
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="164"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="165"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>アラーム・警告履歴を原因・対策とともに表示、リセット、消去</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="171"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか電源再投入が必要かを表示します（--yes が必要。解除されない場合は終了コード 4）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>アラーム履歴と警告履歴を消去します（--yes が必要）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="175"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>--reset と --clear-records を確定します。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="185"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="186"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>エラー: 使い方: %1（局番を 1 つ指定）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="193"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="194"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="199"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="200"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>エラー: 局番 %1 (%2) はアラーム・警告履歴を保持していません</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="206"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>エラー: %1 ドライバには %2 コマンドがありません</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>alarm reset</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>record erase</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="219"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="220"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下の操作は局番 %1 のドライバを変更します。送信するには --yes を付けてください:</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="223"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="224"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 原因が取り除かれ、かつ電源再投入でのみ解除されるアラームでなければ、発生中のアラームを解除します</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="248"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="249"/>
         <source>Machine number %1 (%2)</source>
         <translation>局番 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="276"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="277"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="300"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="304"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="306"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="307"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -1087,153 +1097,153 @@ Remedy: %5</source>
         <translation>局番 %1 (%2) のアラームと警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="67"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>アラームリセットコマンドを送信し、アラームが解除されたか、電源再投入でのみ解除できるかを表示します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="69"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>ドライバが保持しているアラーム履歴・警告履歴を消去します</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="75"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>このドライバはアラーム・警告履歴を保持しません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="105"/>
         <source>Alarm state: %1</source>
         <translation>アラーム状態: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="187"/>
         <source>Reading the records…</source>
         <translation>履歴を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="203"/>
         <source>No alarm is active.</source>
         <translation>アラームは発生していません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="205"/>
         <source>Alarm active: %1 %2.</source>
         <translation>アラーム発生中: %1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="207"/>
         <source>An alarm is active.</source>
         <translation>アラームが発生しています。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="210"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。Alarm-Reset では解除できません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="214"/>
         <source>Could not be read: %1</source>
         <translation>読み出せません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Writes: %1</source>
         <translation>書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="253"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>原因が取り除かれていれば、発生中のアラームを解除します。電源再投入でのみ解除できるアラームもあります。結果に表示されます。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>このドライバはアラームを電源再投入でのみ解除する設定です (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="260"/>
         <source>Reset alarm</source>
         <translation>アラームリセット</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="259"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>局番 %1 にアラームリセットコマンドを送信しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>Sending the alarm reset…</source>
         <translation>アラームリセットを送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm reset: %1</source>
         <translation>アラームリセット: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="276"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>ドライバの電源を切り、5 s 待ってから再投入してください。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 件）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>the alarm and warning records</source>
         <translation>アラーム履歴と警告履歴</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>Clear records</source>
         <translation>履歴消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source>Erase %1 of machine %2?</source>
         <translation>局番 %2 の%1を消去しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source> and </source>
         <translation> と </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>履歴は復元できません。書込み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="295"/>
         <source>Erase</source>
         <translation>消去</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>Erasing the records…</source>
         <translation>履歴を消去中…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>消去: %1（%2 件）。%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="313"/>
         <source>read back empty.</source>
         <translation>読み戻し結果は空です。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>NOT empty when read back.</source>
         <translation>読み戻し結果が空ではありません。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="316"/>
         <source>Erasing failed: %1</source>
         <translation>消去に失敗しました: %1</translation>
     </message>
@@ -1395,95 +1405,95 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="36"/>
+        <location filename="../cli/BackupCommand.cpp" line="37"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>ドライバの全設定をバックアップファイルに保存します（すべて読み出せた場合のみ書き込みます）</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="42"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>書き込むバックアップファイル（アトミックに置き換えます）。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="44"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="45"/>
+        <location filename="../cli/BackupCommand.cpp" line="46"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>接続先が把握しているすべてのドライバ（シミュレーションバス）、またはスキャンで見つかったすべてのドライバ。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="53"/>
+        <location filename="../cli/BackupCommand.cpp" line="54"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>エラー: 局番を指定するか、--all を指定してください: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="62"/>
-        <location filename="../cli/BackupCommand.cpp" line="243"/>
-        <location filename="../cli/BackupCommand.cpp" line="249"/>
+        <location filename="../cli/BackupCommand.cpp" line="63"/>
+        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="71"/>
+        <location filename="../cli/BackupCommand.cpp" line="72"/>
         <source>scanning the bus for drives…</source>
         <translation>バスのドライバをスキャン中…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="86"/>
+        <location filename="../cli/BackupCommand.cpp" line="87"/>
         <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
         <translation>警告: 局番 %1 は応答しましたが、識別に失敗しました: バックアップしていません。この局番を指定して再試行してください (backup %1 -o FILE)。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="107"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>エラー: %2 の読出し中にポート %1 が失われました (%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
-        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="112"/>
+        <location filename="../cli/BackupCommand.cpp" line="247"/>
         <source>nothing written to %1</source>
         <translation>%1 には何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="118"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>エラー: 書き込むファイルを指定してください: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="122"/>
+        <location filename="../cli/BackupCommand.cpp" line="124"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="134"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>interrupted: nothing written</source>
         <translation>中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="138"/>
+        <location filename="../cli/BackupCommand.cpp" line="140"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>エラー: %1 で応答するドライバがありません。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="166"/>
         <source>machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="224"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>局番 %1 の読出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="186"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: %2 個の設定を %3 回の要求で読出し、%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="194"/>
+        <location filename="../cli/BackupCommand.cpp" line="196"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 読出し失敗、%3 個中 %2 個の設定を読出し（%4 回の要求、%5 ms）</translation>
     </message>
@@ -1531,44 +1541,44 @@ Remedy: %5</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="53"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="54"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>読み出せたドライバのみ保存します。その他は除外されます</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="55"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="56"/>
         <source>Stop after the drive being read</source>
         <translation>読出し中のドライバが終わったら停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="83"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="84"/>
         <source>Nothing was read: %1.</source>
         <translation>何も読み出していません：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="106"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="107"/>
         <source>Waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="110"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>%n 台のドライバの設定を読出し中…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="122"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="123"/>
         <source>Stopping after the drive being read…</source>
         <translation>読出し中のドライバが終わったら停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="161"/>
         <source>Not read (cancelled)</source>
         <translation>未読出し（キャンセル）</translation>
     </message>
@@ -1578,58 +1588,58 @@ Remedy: %5</source>
         <translation>ドライバ %1: 識別できません。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
         <source>Not identified</source>
         <translation>識別不可</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="153"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n 個の設定を %1 ms で読出し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>Value not allowed</source>
         <translation>許可されていない値</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="168"/>
         <source>Read failed</source>
         <translation>読出し失敗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="183"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="184"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未読出し: ドライバ %1。まだ何も保存していません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="189"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>読み出した %n 台のドライバを保存しますか？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="213"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="214"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>%n 台のドライバを %1 に保存しました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="219"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>除外（未読出し）: ドライバ %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="223"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="224"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -1806,87 +1816,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="24"/>
         <source>Backup file</source>
         <translation>バックアップファイル</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Label</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Registers</source>
         <translation>レジスタ</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="39"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="40"/>
         <source>Open another backup file</source>
         <translation>別のバックアップファイルを開きます</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="41"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="68"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="69"/>
         <source>Backup file %1</source>
         <translation>バックアップファイル %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="77"/>
         <source>Open backup file</source>
         <translation>バックアップファイルを開く</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="78"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="100"/>
         <source>File: %1</source>
         <translation>ファイル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="101"/>
         <source>Refused: %1</source>
         <translation>拒否: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="116"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>、%1 bit/s、パリティ %2、ストップビット %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="118"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1897,17 +1907,17 @@ Drives: %5</source>
 ドライバ: %5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2、ファームウェア %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="130"/>
         <source>(variant unknown)</source>
         <translation>（機種不明）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="133"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 個の設定</numerusform>
@@ -2069,37 +2079,37 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListMenu</name>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="30"/>
         <source>&amp;Name this machine…</source>
         <translation>この機械に名前を付ける(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="35"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="36"/>
         <source>&amp;Identify again</source>
         <translation>再識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="46"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="47"/>
         <source>&amp;Remove from list</source>
         <translation>リストから削除(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="61"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="62"/>
         <source>Name of %1 (up to %2 characters; empty removes the name):</source>
         <translation>%1 の名前 (最大 %2 文字。空にすると名前を削除)：</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="67"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="69"/>
         <source>Name this machine</source>
         <translation>この機械に名前を付ける</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="74"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="76"/>
         <source>Machine number %1 has no name now.</source>
         <translation>局番 %1 の名前は削除されました。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="75"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="77"/>
         <source>Machine number %1 is now named %2.</source>
         <translation>局番 %1 の名前は %2 になりました。</translation>
     </message>
@@ -2107,133 +2117,133 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="76"/>
         <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
         <translation>局番：バス上のドライブのアドレス（1～247）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="78"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>ドライバの MONITOR LED: 赤 アラーム、緑 準備完了、橙 CW、水色 CCW、紫 外部停止、青 メモリまたは通信異常、灰 応答なし</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>No.</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="98"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>制御優先</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="73"/>
         <source>How each drive&apos;s machine number is set on its switches:
 %1</source>
         <translation>各ドライバの局番をスイッチで設定する方法：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Switches</source>
         <translation>スイッチ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="100"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="101"/>
         <source>Name</source>
         <translation>名前</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="112"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="113"/>
         <source>Two drives may share machine number %1 (%2): check the address switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>2 台のドライバが局番 %1 (%2) を共有している可能性があります：ライン上のすべてのドライバのアドレススイッチを確認し、各ドライバに別の局番を設定して電源を入れ直してください。終端抵抗の不良や A/B の逆接続でも応答が壊れます。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <source>%1 at %2</source>
         <translation>%1、%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <location filename="../ui/bus/BusListModel.cpp" line="135"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="147"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="148"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機種不明</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>ステータスランプ %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="174"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="175"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>ドライバのマニュアル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="177"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
         <source>Status light grey: not live — %1</source>
         <translation>ステータスランプ 灰: 更新停止 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
         <source>No name yet: Name… in the context menu (F2) names this machine</source>
         <translation>まだ名前がありません：コンテキストメニューの「名前を付ける…」(F2) でこの機械に名前を付けます</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="187"/>
         <source>%1: the name given to this machine (F2 changes it)</source>
         <translation>%1：この機械に付けた名前 (F2 で変更)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="189"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="190"/>
         <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
         <translation>このドライブへの要求は、ポートの形式ではなくドライブ自身の通信フォーマット %1 で送信されます。回線はトランザクションの合間にその形式へ切り替わり、また戻ります。右クリックメニューの「通信フォーマット…」で変更します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="196"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="197"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>ドライバが機種を通知しません。値が正しい範囲でチェックされるよう、コンテキストメニュー（機種）から選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="206"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>ドライバは I/O 端子から運転指令を受け付けています。バス経由の試運転には通信優先が必要です。</translation>
     </message>
@@ -2257,67 +2267,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="133"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="135"/>
         <source>State</source>
         <translation>状態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="137"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="139"/>
         <source>Display</source>
         <translation>表示値</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="141"/>
         <source>Target</source>
         <translation>目標</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="143"/>
         <source>Load</source>
         <translation>負荷</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="145"/>
         <source>Alarm</source>
         <translation>アラーム</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="147"/>
         <source>Last answer</source>
         <translation>最終応答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="174"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="164"/>
         <source>connection lost; %1</source>
         <translation>接続断。%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="166"/>
         <source>no answer: %1; %2</source>
         <translation>応答なし: %1。%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="203"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="206"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
@@ -2361,7 +2371,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusPanel.cpp" line="82"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="220"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="221"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
@@ -2376,47 +2386,47 @@ Drives: %5</source>
         <translation>送信中の要求が終わったらスキャンを停止します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="94"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="95"/>
         <source>Rescan at %1</source>
         <translation>%1 で再スキャン</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="134"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="135"/>
         <source>Drives on the bus</source>
         <translation>バス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="150"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="151"/>
         <source>Name this machine…</source>
         <translation>この機械に名前を付ける…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="206"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="207"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（局番 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="210"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="211"/>
         <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
         <translation>局番 %1 は応答しましたが、識別に失敗しました: 再試行中 (%3 回中 %2 回目)… ポーリングはスキャン終了まで待機します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="222"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="223"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
         <translation>%3 で局番 %1–%2 をスキャン中（各 %4 ms）… ポーリングはスキャン終了まで待機します。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="294"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="295"/>
         <source>If one is on this bus, add it with Add drive and its line format.</source>
         <translation>このバスにそのようなドライブがある場合は、「ドライブ追加」で通信フォーマットとともに追加してください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="299"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
         <translation>局番 %1 は応答しましたが、再度問い合わせても識別に失敗しました:「ドライバ追加…」で手動で追加するか、通信設定を確認して再スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="243"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>送信中の要求が終わったらキャンセルします…</translation>
     </message>
@@ -2428,41 +2438,41 @@ Drives: %5</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="260"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="261"/>
         <source>Did not answer the last scan.</source>
         <translation>前回のスキャンで応答しませんでした。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="266"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>局番 %1 でスキャンが停止しました: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>局番 %1–%2 の後でスキャンをキャンセルしました（%4 中 %3）: %n 台のドライバが見つかりました。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="279"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="280"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>局番 %1–%2 で %n 台のドライバが見つかりました（%3 s）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="320"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="321"/>
         <source>Asking machine number %1…</source>
         <translation>局番 %1 に問い合わせ中…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="325"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="326"/>
         <source>Machine number %1: %2 added.</source>
         <translation>局番 %1: %2 を追加しました。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="327"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="328"/>
         <source>Machine number %1: %2 %3</source>
         <translation>局番 %1: %2 %3</translation>
     </message>
@@ -2480,27 +2490,27 @@ Drives: %5</source>
         <translation>バスをスキャン(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="43"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>Last time on %1: %2.</source>
         <translation>前回 %1 では: %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>前回のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>前回の %1 台のドライバを呼び出し(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>前回設定した機種で、これらの局番のドライバを再識別します</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="61"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="62"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 ではまだドライバが登録されていません。バスをスキャンしてドライバを検出してください。</translation>
     </message>
@@ -2587,312 +2597,312 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>ABORTED</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
         <source>STATION ERROR</source>
         <translation>ステーションエラー</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="56"/>
         <source>INTERRUPTED</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="58"/>
         <source>NOT FINISHED</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="67"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="71"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="74"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>End-of-line test certificate</source>
         <translation>出荷検査成績書</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Serial number</source>
         <translation>シリアル番号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>%1, revision %2</source>
         <translation>%1、リビジョン %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Recipe checksum</source>
         <translation>レシピのチェックサム</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Recipe approved by</source>
         <translation>レシピ承認者</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
         <source>not approved (station without users)</source>
         <translation>未承認 (ユーザーのいないステーション)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (approval %2)</source>
         <translation>%1 (承認 %2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Attempt</source>
         <translation>試験回数</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>%1 回目（このレシピでのこのシリアルの試験）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>カウントなし（試験回数の記録開始前の記録）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="92"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="93"/>
         <source>Ended</source>
         <translation>終了</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Record</source>
         <translation>記録</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="103"/>
         <source>First failure:</source>
         <translation>最初の不合格:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>このシリアルは過去の試験で %n 回不合格になっています。以下に一覧を示します。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="124"/>
         <source>Drives</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Variant</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>How known</source>
         <translation>確認方法</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Written</source>
         <translation>書込み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Read back</source>
         <translation>読み戻し</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Verified</source>
         <translation>照合</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>written</source>
         <translation>書込み済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>already set</source>
         <translation>設定済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>NO</source>
         <translation>いいえ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>Measurements</source>
         <translation>測定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Step</source>
         <translation>ステップ</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Quantity</source>
         <translation>測定項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Limits</source>
         <translation>規格値</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>Earlier tests of this serial</source>
         <translation>このシリアルの過去の試験</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="151"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="161"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後のバス通信</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>read from the drive</source>
         <translation>ドライバから読出し</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>proven by the variant probe</source>
         <translation>機種判定で確認済み</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="180"/>
         <source>confirmed by a person</source>
         <translation>担当者が確認</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
         <source>ASSUMED, not proven</source>
         <translation>推定（未確認）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="186"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="192"/>
         <source>not known</source>
         <translation>不明</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="194"/>
         <source>%1 (assumed)</source>
         <translation>%1（推定）</translation>
     </message>
@@ -2900,12 +2910,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="26"/>
         <source>End-of-line certificate %1</source>
         <translation>出荷検査成績書 %1</translation>
     </message>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="54"/>
+        <location filename="../report/CertificatePdf.cpp" line="57"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · %3 / %4 ページ</translation>
     </message>
@@ -2913,7 +2923,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="73"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2928,7 +2938,7 @@ RS-485 Modbus-RTU モータドライバ用立上げツール。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="78"/>
+        <location filename="../cli/CliApp.cpp" line="79"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2974,23 +2984,23 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="124"/>
+        <location filename="../cli/CliApp.cpp" line="125"/>
         <source>note: standard output could not be written (closed early, or the disk is full): what the command printed there is lost; the work itself ran to its end and exit status %1 says how it ended</source>
         <translation>注意: 標準出力に書き込めませんでした（早く閉じられたか、ディスクが満杯）。コマンドがそこに出力した内容は失われました。作業自体は最後まで実行され、終了ステータス %1 がその結果を示します</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
-        <location filename="../cli/CliApp.cpp" line="242"/>
+        <location filename="../cli/CliApp.cpp" line="190"/>
+        <location filename="../cli/CliApp.cpp" line="245"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot; を実行してください。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="208"/>
+        <location filename="../cli/CliApp.cpp" line="210"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 不明なコマンド &quot;%2&quot;。コマンド: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="216"/>
+        <location filename="../cli/CliApp.cpp" line="219"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2999,12 +3009,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="230"/>
+        <location filename="../cli/CliApp.cpp" line="233"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3 はこのコマンドのオプションではありません。&quot;%1 help %2&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="241"/>
+        <location filename="../cli/CliApp.cpp" line="244"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3012,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="96"/>
-        <location filename="../cli/CliContext.cpp" line="110"/>
-        <location filename="../cli/CliContext.cpp" line="118"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="111"/>
+        <location filename="../cli/CliContext.cpp" line="119"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="123"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>serial line: %1</source>
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="146"/>
+        <location filename="../cli/CliContext.cpp" line="147"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="258"/>
+        <location filename="../cli/CliContext.cpp" line="259"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="263"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="321"/>
+        <location filename="../cli/CliContext.cpp" line="322"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="325"/>
+        <location filename="../cli/CliContext.cpp" line="326"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="343"/>
+        <location filename="../cli/CliContext.cpp" line="344"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="353"/>
+        <location filename="../cli/CliContext.cpp" line="354"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -3146,32 +3156,32 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CommandReadBack</name>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="43"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 のコマンド後の読み戻し:</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is running.</source>
         <translation>モータは運転中です。</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is stopped.</source>
         <translation>モータは停止しています。</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="48"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="50"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="57"/>
         <source>The drives of its communication group, read after the command:</source>
         <translation>コマンド後に読み出した通信グループのドライバ:</translation>
     </message>
@@ -3179,95 +3189,95 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="35"/>
+        <location filename="../cli/CompareCommand.cpp" line="36"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>異なる設定を表示します。A、B: 局番、FILE または FILE:ID（差異の有無にかかわらず終了コード 0）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="42"/>
+        <location filename="../cli/CompareCommand.cpp" line="43"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>A をプロファイルの工場出荷時設定と比較します。マニュアルに初期値の記載がない設定は一覧に表示しますが、差異としては数えません。</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="69"/>
-        <location filename="../cli/CompareCommand.cpp" line="86"/>
-        <location filename="../cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="70"/>
+        <location filename="../cli/CompareCommand.cpp" line="87"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="63"/>
+        <location filename="../cli/CompareCommand.cpp" line="64"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="73"/>
+        <location filename="../cli/CompareCommand.cpp" line="74"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="105"/>
+        <location filename="../cli/CompareCommand.cpp" line="106"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>エラー: %1 には複数のドライバ (%2) が含まれています。%1:ID の形式で 1 台を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="108"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>エラー: %1 に局番 %2 のドライバは含まれていません。含まれているのは %3 です</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="124"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>エラー: compare A B、または compare A --defaults（A、B: 局番、FILE または FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="142"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="169"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="170"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
-        <location filename="../cli/CompareCommand.cpp" line="176"/>
+        <location filename="../cli/CompareCommand.cpp" line="182"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="179"/>
+        <location filename="../cli/CompareCommand.cpp" line="186"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="188"/>
         <source>no differences (%1 settings compared)</source>
         <translation>差異なし（比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="188"/>
+        <location filename="../cli/CompareCommand.cpp" line="195"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
@@ -3301,13 +3311,13 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
@@ -3332,105 +3342,105 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>選択した両側を読み出して比較します（ドライバは改めて読み出します）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="75"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="78"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="108"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="111"/>
         <source>%1 refused: %2</source>
         <translation>%1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="122"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="125"/>
         <source>Reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="151"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>Factory defaults</source>
         <translation>工場出荷時設定</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="158"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="161"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1 のバックアップファイルと、その中のドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="165"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="175"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1 にはバス上の識別済みドライバを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="180"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="183"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2 を読み出せません</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="205"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="208"/>
         <source>Unknown family %1</source>
         <translation>不明なファミリ %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="225"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>factory defaults (%1)</source>
         <translation>工場出荷時設定 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="236"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
         <source>(no documented default)</source>
         <translation>（初期値の記載なし）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="237"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="240"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="242"/>
         <source>(not held)</source>
         <translation>（含まれていません）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="255"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 件の差異</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
         <source> in %1 settings compared</source>
         <translation> （比較した設定 %1 個）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="262"/>
         <source>Note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="266"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="269"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>工場出荷時設定の記載なし（差異としては数えません）: %1</translation>
     </message>
@@ -4790,42 +4800,42 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveName</name>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="18"/>
+        <location filename="../model/bus/DriveName.cpp" line="19"/>
         <source>A machine&apos;s name has at most %1 characters; &quot;%2&quot; has %3.</source>
         <translation>機械名は最大 %1 文字です。「%2」は %3 文字あります。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="29"/>
+        <location filename="../model/bus/DriveName.cpp" line="30"/>
         <source>A machine&apos;s name may not hold control characters or line breaks (U+%1).</source>
         <translation>機械名に制御文字や改行は使えません (U+%1)。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="37"/>
+        <location filename="../model/bus/DriveName.cpp" line="38"/>
         <source>A machine&apos;s name may not hold %1 (a percent sign directly before a digit).</source>
         <translation>機械名に %1（パーセント記号の直後に数字）は使えません。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="44"/>
+        <location filename="../model/bus/DriveName.cpp" line="47"/>
         <source>machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="45"/>
+        <location filename="../model/bus/DriveName.cpp" line="48"/>
         <source>machine number %1 (%2)</source>
         <translation>局番 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="50"/>
+        <location filename="../model/bus/DriveName.cpp" line="53"/>
         <source>Machine number %1</source>
         <translation>局番 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="51"/>
+        <location filename="../model/bus/DriveName.cpp" line="54"/>
         <source>Machine number %1 (%2)</source>
         <translation>局番 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="68"/>
+        <location filename="../model/bus/DriveName.cpp" line="72"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
@@ -4980,7 +4990,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="167"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="169"/>
         <source>Write &amp;all pending</source>
         <translation>未書込みをすべて書込み(&amp;A)</translation>
     </message>
@@ -4995,66 +5005,66 @@ Configuration changes written but not stored are discarded.</source>
         <translation>すべて再読出し</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="53"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="55"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>このドライバの全ページの未書込みの編集をすべて書き込み、照合します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="86"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="88"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>設定するドライバをバスリストで選択してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
         <translation>
             <numerusform>すべての編集が受け付けられました。まだ何も書き込んでいません：「未書込みをすべて書込み」で %n 個の値を送信します。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>未書込みをすべて書込み(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="188"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>Reading the drive…</source>
         <translation>ドライバを読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個の値を読み出せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="145"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="208"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="147"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="210"/>
         <source>Nothing was written: %1</source>
         <translation>何も書き込んでいません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="142"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="222"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="144"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="224"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="231"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>未書込みの %n 個の値を局番 %1 に書込み</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="203"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="205"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="235"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="236"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="238"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>%n 個の値を書込み中…</numerusform>
@@ -5064,88 +5074,88 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolAuditCommand</name>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="34"/>
         <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
         <translation>監査証跡を表示: 誰がログイン・承認し、権限を使用または拒否されたか</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
         <translation>audit: T 以降 (2026-11-24、8h、2d、today)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
         <source>audit: only this user.</source>
         <translation>audit: このユーザーのみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>NAME</source>
         <translation>名前</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>audit: only this station.</source>
         <translation>audit: このステーションのみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="53"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="62"/>
         <source>error: --since: %1</source>
         <translation>エラー: --since: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="74"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="89"/>
         <source>no audit entry matches</source>
         <translation>該当する監査記録はありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>user</source>
         <translation>ユーザー</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>detail</source>
         <translation>内容</translation>
     </message>
@@ -5153,49 +5163,49 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="31"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>製品の検査成績書: 最新の記録を PDF で、または --json で JSON として出力</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>The results database (see results).</source>
         <translation>結果データベース（results を参照）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate: 最新ではなく、この ID の記録を使用します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="39"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="59"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>エラー: シリアル番号を 1 つ、または --id ID で記録を指定してください。使い方: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="67"/>
         <source>error: the serial number is empty</source>
         <translation>エラー: シリアル番号が空です</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="142"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="73"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="154"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="80"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>エラー: このプログラムは PDF を作成できません（Qt GUI アプリケーションなし）。--json を使用してください</translation>
     </message>
@@ -5205,28 +5215,28 @@ Configuration changes written but not stored are discarded.</source>
         <translation>エラー: %2 に記録 %1 がありません (%3)</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="104"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>エラー: 記録 %1 はシリアル番号 %2 のもので、%3 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="114"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="147"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="121"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>エラー: %2 にシリアル番号 %1 の記録がありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="141"/>
         <source>wrote %1</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="145"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="157"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>%1 を書き込みました: シリアル番号 %2、%3、記録日時 %4</translation>
     </message>
@@ -5234,19 +5244,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="36"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>出荷検査ステーション: レシピ、結果データベース、製品の検査成績書</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="41"/>
         <source>Subcommands:
 </source>
         <translation>サブコマンド:
 </translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="44"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -5255,22 +5265,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 &quot;opentop-cli help eol&quot; で全オプションを表示します。各サブコマンドは自身のオプションのみ受け付けます。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="92"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>エラー: サブコマンドを指定してください: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="94"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>エラー: 不明なサブコマンド &quot;eol %1&quot;。サブコマンド: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="98"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>&quot;opentop-cli help eol&quot; を参照してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="114"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>エラー: eol %1: --%2 はこのサブコマンドのオプションではありません。使い方: eol %3</translation>
     </message>
@@ -5399,37 +5409,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeApproveCommand</name>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="35"/>
         <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
         <translation>署名済みレシピをライン用に承認 (エンジニア): 以後ステーションで実行できます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="49"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="61"/>
         <source>%1: the recipe is not valid, so it cannot be approved:</source>
         <translation>%1: レシピが無効なため承認できません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="80"/>
         <source>error: %1; the recipe was not approved</source>
         <translation>エラー: %1。レシピは承認されていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="98"/>
         <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
         <translation>%1 rev. %2 を %3 が承認しました (承認 %4、チェックサム %5)</translation>
     </message>
@@ -5437,49 +5447,49 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="27"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>レシピをドライバプロファイル（および CSV ファイルの個別値）と照合してチェックします</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check: この CSV ファイル内の各製品の個別値もチェックします。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="54"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="55"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="65"/>
         <source>%1, serial %2</source>
         <translation>%1、シリアル %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="87"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="91"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="89"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="93"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 は無効です: %n 件の問題。このレシピでは実行できません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="97"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有効: %1 リビジョン %2: %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="100"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="107"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>、%1 の製品 %n 台をチェックしました</numerusform>
@@ -5489,220 +5499,220 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>マスター品からレシピを作成します: バックアップファイルまたはバス上のドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: マスター品のバックアップファイル。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: バス上のマスター品のドライバ。例: 1,2（接続オプションと併用）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="49"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 製品名。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: レシピのリビジョン。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 既存のレシピファイルを置き換えます。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="55"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
         <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
         <translation>recipe create --drives: マスター品をレシピのステップどおりに一度運転し (モータが回転します)、測定値から保持ステップの判定値を決めます。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
         <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
         <translation>recipe create --measure: 測定値の前後に取る余裕。測定値に対する % (既定 25、最小でもパラメータのフルスケールの 5 %)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
         <source>PERCENT</source>
         <translation>パーセント</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
         <source>recipe create --measure: run the motors.</source>
         <translation>recipe create --measure: モータの運転を確認します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="75"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="172"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="282"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>nothing written</source>
         <translation>何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
         <source>%1: %2 settings read</source>
         <translation>%1: %2 個の設定を読出し</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="106"/>
         <source>interrupted while reading the golden unit: nothing written</source>
         <translation>マスター品の読み出し中に中断: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="117"/>
         <source>give its variant with --variant %1=VARIANT</source>
         <translation>--variant %1=機種 で機種を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="130"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>Would run the golden unit through the recipe&apos;s steps:</source>
         <translation>マスター品をレシピのステップどおりに運転します:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="136"/>
         <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
         <translation>モータが回転します。運転するには --yes を付けてください。何も運転せず、何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="141"/>
         <source>measuring the golden unit (Ctrl-C stops every motor):</source>
         <translation>マスター品を測定中 (Ctrl-C で全モータ停止):</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="146"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="150"/>
         <source>drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="157"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="162"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="170"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>WARNING: %1 is not confirmed stopped</source>
         <translation>警告: %1 の停止を確認できていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="179"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
         <source>limits from the golden unit:</source>
         <translation>マスター品から決めた判定値:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="183"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="189"/>
         <source>  drive %1, step %2: %3</source>
         <translation>  ドライバ %1、ステップ %2: %3</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="206"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="213"/>
         <source>error: %1; usage: eol %2</source>
         <translation>エラー: %1。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="218"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>予期しない引数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="214"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="222"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE または --drives LIST のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="217"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
         <source>--measure needs the golden unit on the bus: give --drives LIST</source>
         <translation>--measure にはバス上のマスター品が必要です: --drives で一覧を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="223"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>--margin is for --measure</source>
         <translation>--margin は --measure と併用します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
         <source>--margin %1: give a percentage from 1 to 100</source>
         <translation>--margin %1: 1 から 100 のパーセントを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME で製品名を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="241"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV でレシピのリビジョンを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="236"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="244"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE で書き込むレシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="248"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>エラー: %1 は既に存在します。置き換えるには --force を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="243"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
         <source>error: %1; nothing read</source>
         <translation>エラー: %1。何も読み出していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="272"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="278"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="290"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="296"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="308"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 を書き込みました: %2 リビジョン %3、%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="303"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="316"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>エラー: レシピが &quot;eol recipe check&quot; に合格しません: 修正してから &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
@@ -5710,127 +5720,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="61"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>レシピを表示します: 位置、単位付きのラベル別設定、ステップ、規格値</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="73"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="74"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="84"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>  no settings</source>
         <translation>  設定なし</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>  setting</source>
         <translation>  設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>  per-unit value</source>
         <translation>  個別値</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>range</source>
         <translation>範囲</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>from</source>
         <translation>入力元</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="99"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="106"/>
         <source>CSV file by serial</source>
         <translation>シリアル番号別 CSV ファイル</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="107"/>
         <source>typed by the operator</source>
         <translation>作業者が入力</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="108"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="112"/>
         <source>  no test steps</source>
         <translation>  試験ステップなし</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="111"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="115"/>
         <source>  steps:</source>
         <translation>  ステップ:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="174"/>
         <source>%1, revision %2</source>
         <translation>%1、リビジョン %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="171"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="180"/>
+        <source>serial numbers: %1</source>
+        <translation>シリアル番号: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="181"/>
         <source>checksum %1</source>
         <translation>チェックサム %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>family</source>
         <translation>ファミリ</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>variants</source>
         <translation>機種</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>firmware</source>
         <translation>ファームウェア</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="184"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="194"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
@@ -5838,29 +5853,29 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="27"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>手で編集したレシピを承認します: チェックに合格した場合のみ新しいチェックサムを付けます</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="49"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>エラー: %1 はチェックに合格しません（%n 件の問題）。署名していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="56"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="57"/>
         <source>error: %1; not signed</source>
         <translation>エラー: %1。署名していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="68"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="70"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 は署名済みです (%2)。何も変更していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="74"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>%1 に署名しました: %2 リビジョン %3、%4</translation>
     </message>
@@ -5868,314 +5883,314 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="73"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>結果データベースの製品と直行率を一覧表示、または CSV でエクスポートします</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>結果データベース: SQLite ファイル、sqlite:PATH、または postgresql://user@host/db（既定: OPENTOP_EOL_DB、なければ ~/.local/share/opentop/results.db）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results: このシリアル番号のみ。* または ? を含むと大文字小文字を区別しないパターン（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 以降に開始したもの（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: started before T.</source>
         <translation>results: T より前に開始したもの。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: このレシピ（製品名）のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only this station.</source>
         <translation>results: このステーションのみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>results: only the newest N units.</source>
         <translation>results: 最新の N 台のみ。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="102"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV (RFC 4180) を標準出力または -o FILE に出力します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="107"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: シフトの開始時刻（ローカル時刻、既定 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="140"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; は時刻ではありません。2026-11-24、2026-11-24T06:00（ローカル時刻、または Z や +01:00 付き）、8h、2d、today、yesterday のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="150"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="297"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="171"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 が --until %2 より前ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
         <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
         <translation>results: このバージョンのレシピのみ（eol recipe check が表示するチェックサムで指定）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="95"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
         <source>SUM</source>
         <translation>SUM</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="97"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
         <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
         <translation>results: pass、fail、error（ステーションエラー）、interrupted、aborted、running のいずれか。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="104"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
         <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
         <translation>results: レシピバージョン別・シフト別の直行率、2 回目までの合格率、最終合格率と不合格理由。ステーションエラーと中止は歩留まりに含めません。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="177"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass、fail、error、interrupted、aborted、running のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="185"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 製品の台数を 1 以上で指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="195"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
         <source>no unit matches</source>
         <translation>該当する製品はありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>approved by</source>
         <translation>承認者</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>drives</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="231"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>shift</source>
         <translation>シフト</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>serials</source>
         <translation>シリアル数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>first pass</source>
         <translation>初回合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>second pass</source>
         <translation>2 回目までに合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>last pass</source>
         <translation>最終合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>failed</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>station errors</source>
         <translation>ステーションエラー</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="253"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>Yield per recipe version (station errors and aborts are not counted)</source>
         <translation>レシピバージョン別の歩留まり（ステーションエラーと中止は含めない）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="261"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>%1: checksum %2</source>
         <translation>%1: チェックサム %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>not finished</source>
         <translation>未完了</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="262"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
         <source>Per shift</source>
         <translation>シフト別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="282"/>
         <source>Failure reasons</source>
         <translation>不合格理由</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="277"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="283"/>
         <source>Station errors (not counted in yield)</source>
         <translation>ステーションエラー（歩留まりに含めない）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="294"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
         <source>wrote %1</source>
         <translation>%1 を書き込みました</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="303"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>エラー: 予期しない引数 &quot;%1&quot;。使い方: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="309"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
         <source>error: give --csv or --json, not both</source>
         <translation>エラー: --csv と --json は同時に指定できません</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="313"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="319"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>エラー: -o は CSV ファイルを指定します。--csv も指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="318"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="324"/>
         <source>error: --shifts is for --yield</source>
         <translation>エラー: --shifts は --yield 用です</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="328"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="333"/>
         <source>error: --shifts %1: %2</source>
         <translation>エラー: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="345"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="372"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="380"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="352"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="382"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="393"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
@@ -6242,153 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="58"/>
+        <location filename="../cli/EolRunCommand.cpp" line="60"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="65"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>ユーザーのいないステーションで検査する人 (既定: ログイン名)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="76"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>レシピの規則で止められる再試験（合格済みのシリアル、または試験回数を使い切ったもの）を技術者が許可します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="113"/>
+        <location filename="../cli/EolRunCommand.cpp" line="115"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2 が許可するのは %3。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="140"/>
         <source>any %1 variant</source>
         <translation>%1 の全機種</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="147"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: レシピに局番 %2 の位置がない。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="161"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="176"/>
+        <location filename="../cli/EolRunCommand.cpp" line="179"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="207"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <source>--serial: %1; nothing was sent</source>
+        <translation>--serial: %1。何も送信していない</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="218"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="211"/>
+        <location filename="../cli/EolRunCommand.cpp" line="224"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="216"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="305"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>error: %1; nothing was sent</source>
         <translation>エラー: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="307"/>
+        <location filename="../cli/EolRunCommand.cpp" line="323"/>
         <source>a technician allows it with --retest</source>
         <translation>技術者は --retest で許可できます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="259"/>
+        <location filename="../cli/EolRunCommand.cpp" line="272"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注: %1。--retest の許可により再試験します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="276"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="268"/>
+        <location filename="../cli/EolRunCommand.cpp" line="283"/>
         <source>station: %1</source>
         <translation>ステーション: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="313"/>
+        <location filename="../cli/EolRunCommand.cpp" line="329"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="301"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
@@ -6396,45 +6416,45 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunIdentity</name>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="50"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="88"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="53"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="101"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="65"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="107"/>
         <source>refused: %1; nothing was sent</source>
         <translation>拒否: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="66"/>
         <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
         <translation>このステーションにはユーザーがいます: --user NAME で検査する人を指定してください (パスワードは OPENTOP_PASSWORD または端末から)</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="73"/>
         <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
         <translation>エラー: ユーザーのいるステーションでは、作業者はログインしたユーザー (--user) です。--operator は受け付けません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="98"/>
         <source>run-units: recipe checksum %1 is not approved</source>
         <translation>run-units: レシピのチェックサム %1 は承認されていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="113"/>
         <source>refused: %1 Nothing was sent.</source>
         <translation>拒否: %1 何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="123"/>
         <source>%1 logged in; recipe approved by %2 (approval %3)</source>
         <translation>%1 がログイン。レシピ承認者 %2 (承認 %3)</translation>
     </message>
@@ -6442,43 +6462,43 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunOutput</name>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="85"/>
-        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <location filename="../cli/EolRunOutput.cpp" line="98"/>
+        <location filename="../cli/EolRunOutput.cpp" line="121"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <location filename="../cli/EolRunOutput.cpp" line="165"/>
         <source>rev. %1</source>
         <translation>rev. %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <location filename="../cli/EolRunOutput.cpp" line="167"/>
         <source>attempt %1</source>
         <translation>%1 回目の試験</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <location filename="../cli/EolRunOutput.cpp" line="174"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果は記録されていません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <location filename="../cli/EolRunOutput.cpp" line="178"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果データベースが応答しません: 結果はこのステーション（%1）に保管され、次にステーションのプログラムがデータベースに接続したときに送信されます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <location filename="../cli/EolRunOutput.cpp" line="183"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告: モータの停止が確認できません: %1</translation>
     </message>
@@ -6528,42 +6548,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="120"/>
+        <location filename="../model/station/EolStation.cpp" line="121"/>
         <source>a unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="124"/>
+        <location filename="../model/station/EolStation.cpp" line="125"/>
         <source>open a recipe first</source>
         <translation>先にレシピを開いてください</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
+        <location filename="../model/station/EolStation.cpp" line="145"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: シリアル番号 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="142"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>not connected to a bus</source>
         <translation>バスに接続されていません</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="146"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>ステーションのドライブが安全になり次第、ユニット %1 を開始します</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="151"/>
-        <source>no serial number</source>
-        <translation>シリアル番号がありません</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="182"/>
+        <location filename="../model/station/EolStation.cpp" line="185"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>シリアル %1 を再試験、%2 が許可:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="227"/>
         <source>no unit was started yet</source>
         <translation>まだ試験を開始した製品がありません</translation>
     </message>
@@ -6622,102 +6637,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="25"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>エラー: レシピファイルを 1 つ指定してください。使い方: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="39"/>
         <source>no such file</source>
         <translation>ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="40"/>
+        <location filename="../cli/EolSupport.cpp" line="41"/>
         <source>is a directory; name a recipe file</source>
         <translation>ディレクトリです。レシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="42"/>
+        <location filename="../cli/EolSupport.cpp" line="43"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>通常のファイルではありません（デバイス、FIFO、ソケット）。レシピファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="44"/>
+        <location filename="../cli/EolSupport.cpp" line="45"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>%1 MB を超えています（レシピファイルの上限）</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="48"/>
+        <location filename="../cli/EolSupport.cpp" line="49"/>
         <source>cannot be read: %1</source>
         <translation>読み込めません: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="50"/>
-        <location filename="../cli/EolSupport.cpp" line="171"/>
+        <location filename="../cli/EolSupport.cpp" line="51"/>
+        <location filename="../cli/EolSupport.cpp" line="177"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="77"/>
-        <location filename="../cli/EolSupport.cpp" line="188"/>
+        <location filename="../cli/EolSupport.cpp" line="78"/>
+        <location filename="../cli/EolSupport.cpp" line="199"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="84"/>
+        <location filename="../cli/EolSupport.cpp" line="86"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="91"/>
+        <location filename="../cli/EolSupport.cpp" line="95"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 は OpenTOP が書き込んだ後に変更されています（チェックサム不一致）。そのため、どのステーションでも実行できません。&quot;opentop-cli eol recipe check %1&quot; でチェックし、正しければ &quot;opentop-cli eol recipe sign %1&quot; で署名してください</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="109"/>
+        <location filename="../cli/EolSupport.cpp" line="113"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="140"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>位置 %n 箇所</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="135"/>
+        <location filename="../cli/EolSupport.cpp" line="141"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 個の設定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="137"/>
+        <location filename="../cli/EolSupport.cpp" line="143"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>個別値 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="138"/>
+        <location filename="../cli/EolSupport.cpp" line="144"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n ステップ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="145"/>
+        <location filename="../cli/EolSupport.cpp" line="151"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>書き込むファイル（recipe create、results --csv、certificate）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="146"/>
+        <location filename="../cli/EolSupport.cpp" line="152"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="179"/>
+        <location filename="../cli/EolSupport.cpp" line="188"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>エラー: %1 に結果データベースがありません（まだ何も記録されていません）。--db URL で指定してください</translation>
     </message>
@@ -6749,139 +6764,139 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolUserCommand</name>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <location filename="../cli/EolUserCommand.cpp" line="72"/>
         <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
         <translation>ユーザーを追加 (作業者、技術者、エンジニア、管理者)。最初のユーザーは管理者で、--user は不要です</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <location filename="../cli/EolUserCommand.cpp" line="75"/>
         <source>List the users of the results database</source>
         <translation>結果データベースのユーザー一覧</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <location filename="../cli/EolUserCommand.cpp" line="77"/>
         <source>Disable a user: they can no longer log in; their records stay</source>
         <translation>ユーザーを無効化: ログインできなくなります。記録は残ります</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <location filename="../cli/EolUserCommand.cpp" line="81"/>
         <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
         <translation>ユーザーのパスワードを設定 (自分のものは旧パスワードで、管理者は誰のものでも)</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <location filename="../cli/EolUserCommand.cpp" line="90"/>
         <source>user add: operator, technician, engineer or administrator.</source>
         <translation>user add: operator、technician、engineer、administrator のいずれか。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
         <source>ROLE</source>
         <translation>ロール</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
         <source>user add: the name shown on the screen.</source>
         <translation>user add: 画面に表示する名前。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <location filename="../cli/EolUserCommand.cpp" line="94"/>
         <source>TEXT</source>
         <translation>テキスト</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="108"/>
-        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <location filename="../cli/EolUserCommand.cpp" line="109"/>
+        <location filename="../cli/EolUserCommand.cpp" line="168"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <location filename="../cli/EolUserCommand.cpp" line="124"/>
         <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
         <translation>ユーザーなし: このステーションは管理されていません (誰でも実行・編集・終了できます)。最初の管理者の追加: opentop-cli eol user add NAME --role administrator</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>user</source>
         <translation>ユーザー</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>name</source>
         <translation>名前</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>role</source>
         <translation>ロール</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>active</source>
         <translation>有効</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>created</source>
         <translation>作成日時</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>no (disabled)</source>
         <translation>いいえ (無効)</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <location filename="../cli/EolUserCommand.cpp" line="145"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <location filename="../cli/EolUserCommand.cpp" line="153"/>
         <source>error: --role is one of: %1</source>
         <translation>エラー: --role は次のいずれかです: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <location filename="../cli/EolUserCommand.cpp" line="183"/>
         <source>Present password for %1: </source>
         <translation>%1 の現在のパスワード: </translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="191"/>
-        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <location filename="../cli/EolUserCommand.cpp" line="194"/>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
         <source>New password for %1: </source>
         <translation>%1 の新しいパスワード: </translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <location filename="../cli/EolUserCommand.cpp" line="203"/>
         <source>user %1 added as %2</source>
         <translation>ユーザー %1 を %2 として追加しました</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
         <source>user %1 disabled</source>
         <translation>ユーザー %1 を無効にしました</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <location filename="../cli/EolUserCommand.cpp" line="221"/>
         <source>password of %1 changed</source>
         <translation>%1 のパスワードを変更しました</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <location filename="../cli/EolUserCommand.cpp" line="230"/>
         <source>error: %1; nothing was changed</source>
         <translation>エラー: %1。何も変更していません</translation>
     </message>
@@ -6935,42 +6950,42 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="99"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="134"/>
         <source>Stopping the drives, then giving control back to their inputs…</source>
         <translation>ドライバを停止し、その後入力端子に制御を戻し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="135"/>
         <source>Stopping the drives…</source>
         <translation>ドライバを停止中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>ドライバの入力端子に制御を戻し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Not every drive is safe</source>
         <translation>安全でないドライバがあります</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Could not %1 every drive:</source>
         <translation>すべてのドライバで%1を完了できませんでした:</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="162"/>
         <source>Stay connected</source>
         <translation>接続したままにする</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="163"/>
         <source>Go on anyway</source>
         <translation>このまま続行</translation>
     </message>
@@ -7214,27 +7229,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="29"/>
         <source>no such file</source>
         <translation>ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="31"/>
         <source>is a directory; name a backup file</source>
         <translation>ディレクトリです。バックアップファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="33"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>通常のファイルではありません（デバイス、FIFO、ソケット）。バックアップファイルを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="35"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="43"/>
         <source>error: %1 refused: %2</source>
         <translation>エラー: %1 は使用できません: %2</translation>
     </message>
@@ -7273,135 +7288,135 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="44"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>パラメータを名前で指定し、工業単位で読み出します（--raw ではレジスタ）</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>グループの全パラメータを読み出します（params を参照）。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="51"/>
         <source>Read every readable parameter.</source>
         <translation>読出し可能な全パラメータを読み出します。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>アドレスでレジスタを読み出します: ADDR または ADDR:COUNT（0x.. または 10 進）。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw のファンクションコード: 読出しは 3（保持レジスタ）または 4（入力レジスタ）、書込みは 6 または 16。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="56"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="64"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>エラー: 最初に局番を 1 つ指定してください: get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="72"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>エラー: パラメータ名を指定するか、--group、--all、--raw のいずれか 1 つを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="79"/>
-        <location filename="../cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="80"/>
+        <location filename="../cli/GetCommand.cpp" line="210"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="91"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>エラー: %1 にグループ &quot;%2&quot; はありません。グループ: %3</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>エラー: %1 は書込み専用コマンドのため読み出せません</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="110"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>エラー: %1 にパラメータ &quot;%2&quot; はありません。&quot;opentop-cli params --family %1&quot; を参照してください</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="124"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Raw</source>
         <translation>生データ</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Label</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="159"/>
         <source>(failed: %1)</source>
         <translation>（失敗: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="161"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! プロファイルの許容値外</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="168"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>エラー: %n 個のパラメータを読み出せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="191"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>エラー: --raw には ADDR または ADDR:COUNT（アドレス 0x0000–0xFFFF、個数 1–125）と --fc 3 または 4 が必要です</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Address</source>
         <translation>アドレス</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Hex</source>
         <translation>16 進</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Decimal</source>
         <translation>10 進</translation>
     </message>
@@ -7485,89 +7500,89 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GoldenMeasureButton</name>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="36"/>
         <source>Measure limits…</source>
         <translation>判定値を測定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="42"/>
         <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
         <translation>バス上のマスター品をレシピのステップどおりに一度運転し、測定値から保持ステップの判定値を決めます: 測定値 ± 25 % (最小でもフルスケールの 5 %)、元の判定値より広げません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="52"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="87"/>
         <source>Measure limits on the golden unit</source>
         <translation>マスター品で判定値を測定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="60"/>
         <source>The recipe has no positions.</source>
         <translation>レシピにポジションがありません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="61"/>
         <source>The recipe cannot be read: %1</source>
         <translation>レシピを読み取れません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="65"/>
         <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
         <translation>局番 %1 はバス上のドライバではありません: 先にマスター品に接続してスキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="70"/>
         <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
         <translation>マスター品をレシピのステップどおりに運転しますか? 次のモータが回転します:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="76"/>
         <source>Run the motors</source>
         <translation>モータを運転</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="90"/>
         <source>The bus is not connected.</source>
         <translation>バスが接続されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Measuring the golden unit…</source>
         <translation>マスター品を測定中…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="98"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="100"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="102"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="104"/>
         <source>stopped by the user</source>
         <translation>ユーザーが停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="103"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="108"/>
         <source>Machine number %1: %2</source>
         <translation>局番 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="120"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1 の停止を確認できていません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="117"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
         <source>No limits were taken: %1</source>
         <translation>判定値は決められませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="129"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>局番 %1、ステップ %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="130"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="135"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>保持ステップの判定値をマスター品に合わせました。確認してからレシピを保存してください。</translation>
     </message>
@@ -7659,98 +7674,98 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="64"/>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="65"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="72"/>
+        <location filename="../cli/GroupCheck.cpp" line="73"/>
         <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
         <translation>注意: --no-group-check: 通信グループ %1 のドライバ（%1 に送られたものを同時に実行する）は探していません</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <location filename="../cli/GroupCheck.cpp" line="79"/>
         <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
         <translation>エラー: このバス上のドライバが不明なため、通信グループ %1 のドライバ（%1 に送られたものを応答せずに同時に実行する）を示せません。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <location filename="../cli/GroupCheck.cpp" line="84"/>
         <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
         <translation>先にバスをスキャンする（opentop-cli scan）か、--bus-drives LIST でドライバを指定するか、確認せずに送るには --no-group-check を付けてください</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="108"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告: %1 の通信グループを読み出せませんでした</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <location filename="../cli/GroupCheck.cpp" line="119"/>
         <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
         <translation>注意: バス上のドライバは %1（%2 による）。その後追加されたドライバは次のスキャンまでわかりません</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="133"/>
+        <location filename="../cli/GroupCheck.cpp" line="134"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1 と %2 のすべてに送信するには --yes を付けてください。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>not readable</source>
         <translation>読出し不可</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="192"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Read back from the drives of the group:</source>
         <translation>グループのドライバから読み戻した値:</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="196"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="197"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>verified</source>
         <translation>確認済み</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="198"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>DIFFERS from what was written</source>
         <translation>書き込んだ値と異なる</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="199"/>
+        <location filename="../cli/GroupCheck.cpp" line="200"/>
         <source>not verified</source>
         <translation>未確認</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="247"/>
+        <location filename="../cli/GroupCheck.cpp" line="248"/>
         <source>off</source>
         <translation>無効</translation>
     </message>
@@ -7846,12 +7861,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>通信グループ</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Their values are read back afterwards.</source>
         <translation>値は送信後に読み戻します。</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="65"/>
         <source>Send, also to %1</source>
         <translation>%1 にも送信</translation>
     </message>
@@ -8097,27 +8112,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::IdentityDialog</name>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="23"/>
         <source>Who is it?</source>
         <translation>どなたですか?</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="25"/>
         <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
         <translation>%1には、このステーションでは %2 以上のロールが必要です。ユーザー名とパスワードでログインしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="42"/>
         <source>User name:</source>
         <translation>ユーザー名:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="43"/>
         <source>Password:</source>
         <translation>パスワード:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="62"/>
         <source>Refused: %1</source>
         <translation>拒否: %1</translation>
     </message>
@@ -8805,79 +8820,127 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>速度、負荷、状態、入力、アラームをライブで監視します（Ctrl-C で終了）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="54"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>ドライバのサンプリング間隔 (ms)、%1–%2（既定 500）。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="57"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="58"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>ドライバあたり N サンプル後に停止します（既定: Ctrl-C まで）。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="59"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="50"/>
-        <source>Also write every sample to FILE (CSV with a header).</source>
-        <translation>全サンプルを FILE にも書き込みます（ヘッダ付き CSV）。</translation>
+        <location filename="../cli/MonitorCommand.cpp" line="61"/>
+        <source>Also write every sample to FILE (CSV with a header; a row with a note where the link was lost and where it came back).</source>
+        <translation>全サンプルを FILE にも書き込みます（ヘッダ付き CSV。接続が切れた所と戻った所に注記の行）。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="65"/>
+        <source>When the link to the bus is lost, exit 1 if it is not back within SECONDS (default: reconnect by itself, 0.5 s to 5 s apart, until Ctrl-C).</source>
+        <translation>バスへの接続が切れたとき、SECONDS 秒以内に戻らなければ 1 で終了します（既定: Ctrl-C まで 0.5 秒〜5 秒間隔で自動再接続）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="67"/>
+        <source>SECONDS</source>
+        <translation>SECONDS</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="79"/>
         <source>error: usage: %1</source>
         <translation>エラー: 使い方: %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="89"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>エラー: --interval は %1–%2 ms でなければなりません（指定値 &quot;%3&quot;）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="102"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>エラー: --count はサンプル数（1 以上の整数）でなければなりません（指定値 &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="113"/>
+        <source>error: --give-up must be a number of seconds, more than 0 and at most %1, got &quot;%2&quot;</source>
+        <translation>エラー: --give-up は 0 より大きく %1 以下の秒数にしてください（指定値「%2」）</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="125"/>
         <source>error: cannot write %1: %2</source>
         <translation>エラー: %1 に書き込めません: %2</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="134"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="154"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>警告: 局番 %1: %2。速度は r/min でのみ表示します</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="194"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>エラー: %1 に書き込めません: %2。モニタを停止しました</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="233"/>
+        <source>%1 link lost: %2 (%3); reconnecting for up to %4 s (Ctrl-C ends)</source>
+        <translation>%1 接続断: %2（%3）。最大 %4 秒間再接続を試みます（Ctrl-C で終了）</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="237"/>
+        <source>%1 link lost: %2 (%3); reconnecting until it is back (Ctrl-C ends)</source>
+        <translation>%1 接続断: %2（%3）。戻るまで再接続を試みます（Ctrl-C で終了）</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="246"/>
+        <source>%1 link back after %2 s: %3; monitoring goes on</source>
+        <translation>%1 %2 秒後に接続が戻りました: %3。モニタを続けます</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="261"/>
+        <source>error: the link to %1 was lost at %2 and is not back after %3 s (--give-up %4): %5; monitoring stopped</source>
+        <translation>エラー: %1 への接続が %2 に切れ、%3 秒後も戻りません（--give-up %4）: %5。モニタを停止しました</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="303"/>
         <source>%1 error: %2</source>
         <translation>%1 エラー: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::MonitorCsv</name>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="33"/>
+        <source>link lost</source>
+        <translation>接続断</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="38"/>
+        <source>link back</source>
+        <translation>接続復帰</translation>
     </message>
 </context>
 <context>
@@ -8897,42 +8960,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Target shown</source>
         <translation>目標（表示値）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Speed shown</source>
         <translation>速度（表示値）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="127"/>
+        <location filename="../cli/MonitorOutput.cpp" line="128"/>
         <source>Active alarm</source>
         <translation>発生中のアラーム</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="169"/>
+        <location filename="../cli/MonitorOutput.cpp" line="170"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>code %1</source>
         <translation>コード %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>active</source>
         <translation>発生中</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="179"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="180"/>
+        <location filename="../cli/MonitorOutput.cpp" line="181"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -9051,12 +9114,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="33"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="34"/>
         <source>Switch to communication priority…</source>
         <translation>通信優先に切替え…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="58"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="59"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -9065,53 +9128,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 「%4」に切り替えると、これらのコマンドはバスから受け付けるようになります: 入力端子ではモータを起動・停止できなくなり、「%2」に戻すまで機械側の操作は無効になります。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
         <source>Switch to communication priority</source>
         <translation>通信優先に切替え</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="86"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>局番 %1 は運転、停止、回転方向、速度選択をバスから受け付けるようになります (%2 = &quot;%3&quot;)。入力端子ではモータを起動・停止できなくなります。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="91"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="92"/>
         <source>Switch</source>
         <translation>切替え</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="100"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="101"/>
         <source>Switching to communication priority…</source>
         <translation>通信優先に切替え中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="108"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>局番 %1 はバス経由で運転コマンドを受け付けるようになりました。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="110"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="111"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>制御優先を切り替えられません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="120"/>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="126"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Return to I/O priority</source>
         <translation>I/O 優先に戻す</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="122"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>局番 %1 は再び運転、停止、回転方向、速度選択を入力端子から受け付け、バス経由の運転コマンドを拒否します。入力が運転状態の場合、モータは運転します。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="129"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="130"/>
         <source>Returning to I/O priority…</source>
         <translation>I/O 優先に戻し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="138"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="139"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>局番 %1 は再び入力端子に従います。</translation>
     </message>
@@ -9153,184 +9216,184 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="38"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>&amp;Write to all</source>
         <translation>すべてに書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="40"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="41"/>
         <source>Write one setting to several drives</source>
         <translation>1 つの設定を複数のドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Machine number</source>
         <translation>局番</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Model</source>
         <translation>型式</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Current value</source>
         <translation>現在値</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="59"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: another family (%1)</source>
         <translation>未書込み: 別ファミリ (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="78"/>
         <source>Not written: not identified (%1)</source>
         <translation>未書込み: 未識別 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="83"/>
         <source>&amp;Setting:</source>
         <translation>設定(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="89"/>
         <source>New &amp;value:</source>
         <translation>新しい値(&amp;V):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="162"/>
         <source>cannot be read</source>
         <translation>読出し不可</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="165"/>
         <source>reading…</source>
         <translation>読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="193"/>
         <source>read failed: %1</source>
         <translation>読出し失敗: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>ドライバ %1: %2 がまだ不明で、許容値はそれに依存します。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="226"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="228"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>ドライバ間で単位が異なります (%1)。1 台ずつ書き込んでください。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>ドライバ %1 では許可されていません (%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>ドライバ %1 の通信グループでは許可されていません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>None of the selected drives is identified.</source>
         <translation>選択したドライバはいずれも識別されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="261"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="315"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="266"/>
         <source>Allowed on %1</source>
         <translation>%1 で許可</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="272"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="274"/>
         <source>Warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="273"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="275"/>
         <source>Allowed on %1.</source>
         <translation>%1 で許可。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="323"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>それでも %n 台のドライバに設定しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="322"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="324"/>
         <source>&amp;Set it</source>
         <translation>設定する(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1 を局番 %2 に書込み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Nothing was written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>waiting…</source>
         <translation>待機中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="353"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1 を %n 台のドライバに書込み中…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="365"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>%n 台中 %1 台のドライバで書込み・照合完了。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
         <source>writing…</source>
         <translation>書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written and verified</source>
         <translation>書込み・照合済み</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>書込み済み、未照合（読み戻し不可）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
@@ -9338,57 +9401,57 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::NameCommand</name>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="38"/>
+        <location filename="../cli/NameCommand.cpp" line="39"/>
         <source>Name a machine (&quot;Infeed conveyor 3&quot;) or show the names of the bus</source>
         <translation>機械に名前を付ける (「Infeed conveyor 3」)、またはバスの名前を表示</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="44"/>
+        <location filename="../cli/NameCommand.cpp" line="45"/>
         <source>error: name takes a machine number and one name; put a name with spaces in quotes: name 1 &quot;Infeed conveyor 3&quot;</source>
         <translation>エラー：name には局番と名前を 1 つずつ指定します。空白を含む名前は引用符で囲んでください：name 1 &quot;Infeed conveyor 3&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="52"/>
+        <location filename="../cli/NameCommand.cpp" line="53"/>
         <source>error: %1</source>
         <translation>エラー：%1</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="62"/>
+        <location filename="../cli/NameCommand.cpp" line="63"/>
         <source>No machine of this bus has a name yet; give one with: name ID &quot;TEXT&quot;</source>
         <translation>このバスの機械にはまだ名前がありません。次のように付けます：name ID &quot;TEXT&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>name</source>
         <translation>名前</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="77"/>
+        <location filename="../cli/NameCommand.cpp" line="78"/>
         <source>error: &quot;%1&quot; is not a machine number 1–247</source>
         <translation>エラー：「%1」は 1–247 の局番ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="87"/>
+        <location filename="../cli/NameCommand.cpp" line="88"/>
         <source>Machine number %1 has no name.</source>
         <translation>局番 %1 には名前がありません。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="93"/>
+        <location filename="../cli/NameCommand.cpp" line="94"/>
         <source>error: %1 Nothing was changed.</source>
         <translation>エラー：%1 何も変更していません。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="106"/>
+        <location filename="../cli/NameCommand.cpp" line="107"/>
         <source>Machine number %1 has no name now.</source>
         <translation>局番 %1 の名前は削除されました。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="107"/>
+        <location filename="../cli/NameCommand.cpp" line="108"/>
         <source>%1 is named now; messages, files and scans show it.</source>
         <translation>%1 に名前を付けました。メッセージ、ファイル、スキャンに表示されます。</translation>
     </message>
@@ -9568,112 +9631,112 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="39"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>Parameter initialisation</source>
         <translation>パラメータ初期化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="49"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="50"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>ドライバ %1 の全設定を、通信設定も含めて工場出荷時設定に戻します: その後、ドライバは初期値の通信速度でしか応答しない場合があり、制御優先は入力端子側に戻ります。モータは停止している必要があります。送信前に、このドライバへの影響を一覧表示します。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="57"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>ドライバ %1 の全パラメータを初期化(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="59"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="60"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>ドライバと変更内容を示して事前に確認します</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="87"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="88"/>
         <source>Reading what the initialisation would change…</source>
         <translation>初期化による変更内容を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="111"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="112"/>
         <source>Afterwards:</source>
         <translation>その後:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="116"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="117"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>このドライバの未書込みの編集 %n 件は破棄されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>送信済み: %1（局番 %2 のみ）。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>送信済み: %1（局番 %2）。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="127"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="133"/>
         <source>Initialise drive %1</source>
         <translation>ドライバ %1 の初期化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Reset every setting of %1 to its factory defaults?</source>
         <translation>%1 のすべての設定を工場出荷時の値に戻しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="142"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="143"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>キャンセルしました。何も送信していません。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="150"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="151"/>
         <source>Initialising drive %1…</source>
         <translation>ドライバ %1 を初期化中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="159"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>ドライバ %1 が初期化を確認しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="161"/>
         <source>Nothing was sent: %1</source>
         <translation>何も送信していません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="173"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>&amp;Reconnect at %1 bit/s after the power-up</source>
         <translation>電源投入後に %1 bit/s で再接続(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="177"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="178"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>ドライバ %1 を初期化しました。値を再読出し中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>ドライバ %1 を初期化しました。%n 個の値を読み戻せませんでした（現在は初期値の通信設定でのみ応答する可能性があります）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="187"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="188"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>ドライバ %1 を工場出荷時設定に初期化しました。値を再読出ししました。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="214"/>
         <source>Reconnecting at %1 bit/s in %2 s…</source>
         <translation>%2 s 後に %1 bit/s で再接続します…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="226"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="227"/>
         <source>Reconnect at %1 bit/s from the Bus menu.</source>
         <translation>「バス」メニューから %1 bit/s で再接続してください。</translation>
     </message>
@@ -10257,32 +10320,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="39"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生産モード（出荷検査）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>出荷検査ステーションの作業者画面。元に戻すまでパラメータは編集できません (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>&amp;Full screen</source>
         <translation>全画面表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="54"/>
         <source>&amp;Station name…</source>
         <translation>ステーション名(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>この出荷検査ステーションが各ユニットに記録する名前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="64"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -10291,58 +10354,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 結果を記録できるようになるまで、製品は試験できません。ステーションが自動で再試行します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="91"/>
         <source>Station name</source>
         <translation>ステーション名</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="84"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>このステーションが各ユニットに記録する名前（ラインの各ステーションにそれぞれ別の名前が必要です）:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="92"/>
         <source>A station needs a name.</source>
         <translation>ステーションには名前が必要です。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="93"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>ユニットを検査中です。完了してから名前を変更してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="110"/>
         <source>Production mode</source>
         <translation>生産モード</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="111"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>製品を試験中です。エンジニアリングモードに戻る前に、キャンセル (Esc) するか試験の終了を待ってください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="63"/>
         <source>Results database</source>
         <translation>結果データベース</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="124"/>
         <source>leave production mode</source>
         <translation>生産モードを終了する</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="171"/>
         <source>A unit is being tested</source>
         <translation>製品を試験中です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="172"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>製品 %1 を試験中です。キャンセルして「%2」を実行しますか？ 先にモータを停止し、製品は中止として記録します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="184"/>
         <source>cancelled to %1</source>
         <translation>「%1」のためキャンセル</translation>
     </message>
@@ -10415,42 +10478,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="54"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="56"/>
         <source>Open recipe…</source>
         <translation>レシピを開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="57"/>
         <source>Per-unit values…</source>
         <translation>個別値…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="63"/>
         <source>Recipe:</source>
         <translation>レシピ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Now</source>
         <translation>実行中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
         <source>Unit %1: %2…</source>
         <translation>製品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>Recipe not usable</source>
         <translation>レシピを使用できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10459,117 +10522,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
         <source>open another recipe</source>
         <translation>別のレシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="228"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — ドライバ %n 台</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;なし: 製品のレシピを開いてください&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>ステーション %1 · 結果: %2 · 個別値: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>loaded</source>
         <translation>読込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="118"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>ユニット %1: まずステーションのドライブを安全な状態にしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="278"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="288"/>
         <source>drive %1 (%2)</source>
         <translation>ドライバ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="280"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>waiting</source>
         <translation>待機中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>Unit %1 — attempt %2</source>
         <translation>製品 %1 — %2 回目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="316"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>このステーションに保管: 結果サーバーが応答しませんでした。サーバーが応答すると自動的に送信されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果データベースの復旧後、%2 に記録しました。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="156"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>Unit %1</source>
         <translation>製品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="331"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="341"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>製品 %1 は %2 で終了しましたが、結果が結果データベースに記録されていません：%3
 記録されるまで試験しません。ステーションが自動で再試行します（次回 %4）。この製品は別に置いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
         <source>Motor not confirmed stopped</source>
         <translation>モータの停止が確認できません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10780,12 +10843,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>保存すると電源再投入後も残り、モータは測定どおり振動したりオーバーシュートしたりするおそれがあります。「不採用」でドライバの元のゲインを書き戻します。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
         <source>Reject the gains</source>
         <translation>ゲインを不採用</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="96"/>
         <source>Store anyway</source>
         <translation>それでも保存</translation>
     </message>
@@ -10793,22 +10856,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="52"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>疑似端末を開けません: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="69"/>
+        <location filename="../sim/PtySimServer.cpp" line="112"/>
+        <source>%1 is in use by another simulator (PID %2); stop it first, or choose another path for --pty</source>
+        <translation>%1 は別のシミュレータ（PID %2）が使用中です。先にそれを停止するか、--pty に別のパスを指定してください</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="121"/>
+        <source>cannot create the lock file %1: %2</source>
+        <translation>ロックファイル %1 を作成できません: %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="80"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 は既に存在し、シンボリックリンクではありません。置き換えません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="75"/>
+        <location filename="../sim/PtySimServer.cpp" line="83"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>シンボリックリンク %1 -&gt; %2 を作成できません</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="117"/>
+        <location filename="../sim/PtySimServer.cpp" line="162"/>
         <source>the port is plugged in: %1</source>
         <translation>ポートを接続しました: %1</translation>
     </message>
@@ -10900,44 +10973,44 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApproveButton</name>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="16"/>
         <source>Approve…</source>
         <translation>承認…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="21"/>
         <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
         <translation>保存したレシピをライン用に承認 (エンジニア): ユーザーのいるステーションは承認済みレシピだけを実行します</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="43"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="65"/>
         <source>Approve recipe</source>
         <translation>レシピの承認</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
         <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
         <translation>先にレシピを保存してください: 承認されるのは保存したファイルのチェックサムです。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="39"/>
         <source>%1 cannot be approved: %2</source>
         <translation>%1 は承認できません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="44"/>
         <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
         <translation>このステーションにはユーザーがいません: 承認には承認者が記録されます。opentop-cli eol user add でユーザーを設定してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="50"/>
         <source>approve %1 rev. %2</source>
         <translation>%1 rev. %2 の承認</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="66"/>
         <source>%1 rev. %2 is approved by %3: stations run it.</source>
         <translation>%1 rev. %2 は %3 が承認しました: ステーションで実行されます。</translation>
     </message>
@@ -10963,170 +11036,170 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="62"/>
         <source> (for %1)</source>
         <translation> (%1 用)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="94"/>
         <source>the recipe names no product</source>
         <translation>レシピに製品名がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="96"/>
         <source>the recipe has no revision</source>
         <translation>レシピにリビジョンがありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="98"/>
         <source>the recipe names no drive</source>
         <translation>レシピにドライバが指定されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="111"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1: 局番 %2 はすでに位置 %3 で使用されています。製品の各ドライバには固有の局番が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="133"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なファミリ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="139"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1: %2 の局番は %3–%4 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="152"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1: %2 に機種 &quot;%3&quot; はありません。既知: %4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="154"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="156"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1: 機種 &quot;%2&quot; が 2 回指定されています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="157"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="164"/>
         <source>%1: variantProof &quot;%2&quot; is not known; use &quot;required&quot; or &quot;operator&quot; (or leave it out)</source>
         <translation>%1: variantProof「%2」は不明。&quot;required&quot; か &quot;operator&quot; を使用（または省略）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="169"/>
         <source>%1: variantProof &quot;operator&quot; needs exactly one allowed variant for the operator to confirm</source>
         <translation>%1: variantProof &quot;operator&quot; には作業者が確認する許可機種がちょうど 1 つ必要</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="174"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="181"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1: ファームウェアバージョン &quot;%2&quot; はドライバが通知する形式ではありません（major.minor、例: &quot;1.5&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="194"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 に設定 &quot;%2&quot; はありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="189"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="196"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 はレシピで書き込める設定ではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="191"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="198"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 はドライバの通信方法を決める設定です。レシピでは変更できません（変更すると、実行中にステーションがドライバを見失います）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: setting %2</source>
         <translation>%1: 設定 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="216"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="223"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="288"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="222"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="229"/>
         <source>%1 is given twice</source>
         <translation>%1 が 2 回指定されています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="230"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="237"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1: 許容値は %2 に依存しますが、レシピで設定されていません。%2 を設定に追加してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="239"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="246"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 は %2 の許容値を決めます。%2 もレシピで設定してください。設定しないと、ドライバに無効な値が残る可能性があります</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="255"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="323"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="262"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="330"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1: 単位が &quot;%2&quot; ですが、ドライバの値の単位は &quot;%3&quot; です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="276"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 個別値 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="287"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="294"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 が 2 回指定されています（設定または個別値として）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="293"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="300"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1: 範囲の最小値 %2 が最大値 %3 を超えています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1: 許容値は %2 に依存しますが、レシピで設定されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="328"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 は数値ではありません。個別値には数値の設定が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="327"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="334"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 範囲 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="340"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 はドライバの許容範囲外です: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="345"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="352"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 にドライバで許可されていない値が含まれています。許容値: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 個別値 %2: %3%4 はレシピの範囲 %5–%6%4 外です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="382"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="389"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: レシピに個別値 %2 はありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="392"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>レシピに局番 %1 のドライバはありません</translation>
     </message>
@@ -11139,136 +11212,136 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>レシピエディタ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="61"/>
         <source>Revision:</source>
         <translation>リビジョン:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Product:</source>
         <translation>製品:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Description:</source>
         <translation>説明:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="65"/>
         <source>Position:</source>
         <translation>位置:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from drives on the bus…</source>
         <translation>バス上のドライバから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from backup file…</source>
         <translation>バックアップファイルから新規作成…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Open…</source>
         <translation>開く…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save as…</source>
         <translation>名前を付けて保存…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>マスター品のバス上のドライバまたはバックアップファイルからレシピを作成するか、既存のレシピを開いてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
         <source>the recipe is empty</source>
         <translation>レシピが空です</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>レシピはチェックに合格しました: 保存して実行できます。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 件の問題: 修正するまでレシピを保存できません。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>レシピがチェックに合格しません（%n 件の問題）。何も保存していません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>%1 を読み込めません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 は OpenTOP のレシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1 を開きましたが、そのままでは読み込めません (%2)。保存時にチェックし、再度署名します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Open recipe</source>
         <translation>レシピを開く</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="326"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>レシピ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="336"/>
         <source>Save recipe</source>
         <translation>レシピを保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
         <source>Recipes (*.json)</source>
         <translation>レシピ (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="343"/>
         <source>Saved and signed: %1</source>
         <translation>保存・署名しました: %1</translation>
     </message>
@@ -11276,12 +11349,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="268"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 は %2 MB を超えています（レシピファイルの上限）。レシピファイルではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="276"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -11355,88 +11428,88 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="47"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON ファイルではありません: %2 バイト目で %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="51"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="52"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>OpenTOP のレシピファイルではありません: JSON がオブジェクトではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="74"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="78"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: レシピにドライバが指定されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="79"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="83"/>
         <source>%1: must be an object</source>
         <translation>%1: オブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="100"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot; が &quot;%2&quot; ではなく &quot;%1&quot; です）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="98"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="102"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP のレシピファイルではありません（&quot;format&quot;: &quot;%1&quot; がありません）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; は 1 以上の整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="105"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>新しい OpenTOP で書き込まれています（レシピフォーマットバージョン %1）。このバージョンが読み込めるのはレシピフォーマットバージョン %2 です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="111"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>レシピにチェックサムがありません（&quot;checksum&quot;: &quot;sha256:…&quot;）。OpenTOP で書き込まれていないか、書込み後に変更されています</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="117"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="121"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>書込み後にレシピが変更されています（チェックサム不一致）。変更を承認するには OpenTOP で開いて保存してください</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="138"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot; は局番 1–247 でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="136"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="213"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="140"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="217"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="181"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="185"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot; は数値またはテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="197"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="201"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot; は &quot;%3&quot; ではなく &quot;csv&quot; または &quot;operator&quot; でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="214"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 不明なステップタイプ &quot;%2&quot;。既知: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="226"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="230"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot; は運転データ番号（例: 2）でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="239"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="241"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot; は &quot;cw&quot; または &quot;ccw&quot; でなければなりません</translation>
     </message>
@@ -11461,62 +11534,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>%1: 規格値には &quot;lower&quot;、&quot;upper&quot;、またはその両方が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="313"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="325"/>
         <source>&quot;retest&quot; must be an object</source>
         <translation>&quot;retest&quot; はオブジェクトでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="322"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="334"/>
         <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
         <translation>retest: &quot;maxAttempts&quot; は 0（制限なし）から 100 までの整数でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="332"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
         <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
         <translation>retest: &quot;passedSerial&quot; は &quot;%1&quot; ではなく technician、refuse、allow のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="356"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 不明なキー &quot;%2&quot;。使用可能: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; は空でないテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="359"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; はテキストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot; はテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="374"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="386"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot; は空でないテキストのリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="396"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot; は数値でなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="410"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="422"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; はリストでなければなりません</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="413"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="425"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; のエントリが %3 個あります。最大 %4 個までです</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="419"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="431"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: すべてのエントリはオブジェクトでなければなりません</translation>
     </message>
@@ -11524,141 +11597,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>ファミリの全機種（例: dbu200, dbu400）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任意のファームウェア（例: 1.5, 1.6）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>単位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>最小</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>最大</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>入力元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add per-unit value…</source>
         <translation>個別値を追加…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add setting…</source>
         <translation>設定を追加…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="138"/>
         <source>Remove</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
         <source>Per-unit values</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Test steps</source>
         <translation>試験ステップ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Machine number:</source>
         <translation>局番:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Name:</source>
         <translation>名称:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Family:</source>
         <translation>ファミリ:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed variants:</source>
         <translation>許可する機種:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Allowed firmware:</source>
         <translation>許可するファームウェア:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="186"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="337"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>CSV file</source>
         <translation>CSV ファイル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="229"/>
         <source>typed by the operator</source>
         <translation>作業者が入力</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="279"/>
         <source>(unknown: %1)</source>
         <translation>（不明: %1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a per-unit value</source>
         <translation>個別値を追加</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a setting</source>
         <translation>設定を追加</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="343"/>
         <source>Setting:</source>
         <translation>設定:</translation>
     </message>
@@ -12027,92 +12100,92 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>Step</source>
         <translation>ステップ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>What it does</source>
         <translation>内容</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="55"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="56"/>
         <source>Add step</source>
         <translation>ステップを追加</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
         <source>Remove</source>
         <translation>削除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
         <source>Move up</source>
         <translation>上へ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="63"/>
         <source>Move down</source>
         <translation>下へ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
         <source>(unknown step: %1)</source>
         <translation>（不明なステップ：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="215"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
         <source>No step selected</source>
         <translation>ステップが選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="217"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>ステップを追加するか、編集するステップを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="222"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="223"/>
         <source>Step %1: %2</source>
         <translation>ステップ %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="247"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
         <source>This step has no settings.</source>
         <translation>このステップに設定項目はありません。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="323"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
         <source>(unknown: %1)</source>
         <translation>（不明：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
         <source>Parameter:</source>
         <translation>パラメータ：</translation>
     </message>
@@ -12120,54 +12193,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::Reconnection</name>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <location filename="../ui/main/Reconnection.cpp" line="31"/>
         <source>&amp;Reconnect</source>
         <translation>再接続(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <location filename="../ui/main/Reconnection.cpp" line="38"/>
         <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
         <translation>同じドライバとページで前回の接続を開き直します (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <location filename="../ui/main/Reconnection.cpp" line="92"/>
         <source>Reconnecting to %1…</source>
         <translation>%1 に再接続中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <location filename="../ui/main/Reconnection.cpp" line="123"/>
         <source>Reconnected to %1: reading every drive again…</source>
         <translation>%1 に再接続しました: すべてのドライバを読み出し直し中…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <location filename="../ui/main/Reconnection.cpp" line="176"/>
         <source>Reconnected to %1.</source>
         <translation>%1 に再接続しました。</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <location filename="../ui/main/Reconnection.cpp" line="200"/>
         <source>Reconnecting failed: %1</source>
         <translation>再接続に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="217"/>
-        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <location filename="../ui/main/Reconnection.cpp" line="218"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
         <source>Connection lost</source>
         <translation>接続断</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="223"/>
-        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <location filename="../ui/main/Reconnection.cpp" line="226"/>
+        <location filename="../ui/main/Reconnection.cpp" line="267"/>
         <source>Reconnect</source>
         <translation>再接続</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <location filename="../ui/main/Reconnection.cpp" line="268"/>
         <source>Go on anyway</source>
         <translation>このまま続行</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <location filename="../ui/main/Reconnection.cpp" line="269"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
@@ -12337,118 +12410,118 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="37"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>バックアップファイルによるドライバの変更内容を表示します。--yes で書き込み、照合します</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>ファイル内のこれらのドライバのみ復元します。例: 1,5-7。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>ドライバを読み出して計画を表示します。何も書き込みません。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="45"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>計画を書き込みます（指定しない場合、restore は表示のみ）。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="54"/>
+        <location filename="../cli/RestoreCommand.cpp" line="55"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1: ドライバの設定を読み出せませんでした。比較も書込みもしていません</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="60"/>
-        <location filename="../cli/RestoreCommand.cpp" line="98"/>
+        <location filename="../cli/RestoreCommand.cpp" line="61"/>
+        <location filename="../cli/RestoreCommand.cpp" line="99"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>file value</source>
         <translation>ファイルの値</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>device value</source>
         <translation>デバイスの値</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="81"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 個を書込み・照合、%2 個は変更なし、%3 個は失敗、%4 個は未実行</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="87"/>
         <source>, %1 not confirmed</source>
         <translation>、%1 個は未確認</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="88"/>
+        <location filename="../cli/RestoreCommand.cpp" line="89"/>
         <source>; %1 of %2 store commands written</source>
         <translation>。保存コマンド %2 個中 %1 個を書込み</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="123"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>エラー: バックアップファイルを 1 つ指定してください: restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="137"/>
+        <location filename="../cli/RestoreCommand.cpp" line="138"/>
         <source>error: --ids: %1</source>
         <translation>エラー: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="142"/>
+        <location filename="../cli/RestoreCommand.cpp" line="144"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>エラー: %1 に局番 %2 のドライバは含まれていません。含まれているのは %3 です</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="165"/>
         <source>error: %1; nothing written</source>
         <translation>エラー: %1。何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="181"/>
+        <location filename="../cli/RestoreCommand.cpp" line="184"/>
         <source>error: %1: %2</source>
         <translation>エラー: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="205"/>
         <source>%1: not attempted</source>
         <translation>%1: 未実行</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="234"/>
         <source>dry run: nothing written</source>
         <translation>ドライラン: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="229"/>
+        <location filename="../cli/RestoreCommand.cpp" line="235"/>
         <source>nothing written; add --yes to write</source>
         <translation>何も書き込んでいません。書き込むには --yes を付けてください</translation>
     </message>
@@ -12496,161 +12569,161 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>ファイル:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>ドライバを読み出して変更内容を表示します。何も書き込みません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>プレビューした変更を書き込み、それぞれ読み戻して照合します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>実行中の書込みの照合後に停止します</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>レポートをテキストで保存します（名前が .csv で終わる場合は CSV）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="64"/>
         <source>C&amp;lose</source>
         <translation>閉じる(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="112"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="113"/>
         <source>%1: no such file</source>
         <translation>%1: ファイルがありません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="117"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
         <source>the file could not be read</source>
         <translation>ファイルを読み込めませんでした</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="119"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="179"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>拒否。何も書き込みません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="123"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="124"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>ファイル内のドライバ %n 台。復元する内容を選択し、「プレビュー」を押してください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="145"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="146"/>
         <source>Refused, nothing written:</source>
         <translation>拒否。何も書き込んでいません:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="147"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Drive %1 from %2: %3</source>
         <translation>ドライバ %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="177"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
         <source>Choose a backup file first.</source>
         <translation>先にバックアップファイルを選択してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="193"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="194"/>
         <source>Nothing was read or written: %1.</source>
         <translation>何も読み書きしていません：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Reading drive %1…</source>
         <translation>ドライバ %1 を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Writing drive %1…</source>
         <translation>ドライバ %1 に書込み中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="93"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="94"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>ドライバ %1: %2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="228"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>実行中の書込みの照合後に停止します…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="243"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="324"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="329"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="244"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="325"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="330"/>
         <source>Drive %1: %2</source>
         <translation>ドライバ %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="246"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="247"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>書き込む設定 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="253"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="254"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="256"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>まだ何も書き込んでいません。適用するには「ドライバに書込み」を押してください。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="258"/>
         <source>Nothing written.</source>
         <translation>何も書き込んでいません。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="305"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
         <source>Restore from backup file</source>
         <translation>バックアップファイルから復元</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="307"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP バックアップ (*.json);;すべてのファイル (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="332"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="333"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>ドライバ %1 に %n 個の設定を書き込み、それぞれ読み戻して照合しますか？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>Write to drives</source>
         <translation>ドライバに書込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>&amp;Write</source>
         <translation>書込み(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="342"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
         <source>Save restore report</source>
         <translation>復元レポートを保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="344"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>テキスト (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="348"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="349"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -12826,62 +12899,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="17"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="18"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 個を書込み・照合、%2 個は変更なし、%3 個は失敗、%4 個は未実行</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="23"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>, %1 not confirmed</source>
         <translation>、%1 個は未確認</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="25"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="26"/>
         <source>; %1 of %2 store commands written</source>
         <translation>。保存コマンド %2 個中 %1 個を書込み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 復元レポート</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>File: %1</source>
         <translation>ファイル: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="36"/>
         <source>Date: %1 (UTC)</source>
         <translation>日時: %1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Written to the drives</source>
         <translation>ドライバに書込み済み</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Preview only: nothing written</source>
         <translation>プレビューのみ: 何も書き込んでいません</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="41"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="42"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>局番 %1（%2 から）: %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="52"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: %2</source>
         <translation>  %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="54"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="55"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1: ファイル %2、ドライバ %3: %4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="60"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="61"/>
         <source>  Note: %1</source>
         <translation>  注: %1</translation>
     </message>
@@ -13066,148 +13139,148 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="61"/>
         <source>End-of-line results</source>
         <translation>出荷検査結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Started</source>
         <translation>開始</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Recipe</source>
         <translation>レシピ</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Station</source>
         <translation>ステーション</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>First failure</source>
         <translation>最初の不合格</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
         <source>Export CSV…</source>
         <translation>CSV エクスポート…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Certificate PDF…</source>
         <translation>検査成績書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 にはまだ結果データベースがありません: ステーションが最初の製品を記録するときに作成されます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="142"/>
         <source>Opening the results database %1…</source>
         <translation>結果データベース %1 を開いています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Results database %1</source>
         <translation>結果データベース %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="178"/>
         <source>Searching…</source>
         <translation>検索しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="189"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="278"/>
         <source>the results database is not open</source>
         <translation>結果データベースが開いていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="220"/>
         <source>%1 rev. %2</source>
         <translation>%1 rev. %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="224"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="239"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>製品 %n 台: 合格 %1、不合格 %2、ステーションエラー %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
         <source>no unit is selected</source>
         <translation>製品が選択されていません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
         <source>Reading unit %1…</source>
         <translation>製品 %1 を読み出しています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="307"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>製品の記録をまだ読み出しています</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>Export units as CSV</source>
         <translation>製品を CSV でエクスポート</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV ファイル (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>製品 %n 台を %1 に書き込みました</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Save certificate</source>
         <translation>検査成績書を保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF ファイル (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="338"/>
         <source>Certificate written to %1</source>
         <translation>検査成績書を %1 に書き込みました</translation>
     </message>
@@ -13355,62 +13428,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="49"/>
+        <location filename="../cli/RunCommand.cpp" line="50"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>試運転: 運転開始、停止、回転方向、運転データ、保持/フリー、速度（--yes が必要）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="54"/>
+        <location filename="../cli/RunCommand.cpp" line="55"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>コマンドを送信します（モータが動作または停止します）。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="64"/>
+        <location filename="../cli/RunCommand.cpp" line="65"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>エラー: 使い方: %1（局番を 1 つ指定。負の速度は -- の後に指定）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="72"/>
-        <location filename="../cli/RunCommand.cpp" line="77"/>
-        <location filename="../cli/RunCommand.cpp" line="82"/>
-        <location filename="../cli/RunCommand.cpp" line="144"/>
+        <location filename="../cli/RunCommand.cpp" line="73"/>
+        <location filename="../cli/RunCommand.cpp" line="78"/>
+        <location filename="../cli/RunCommand.cpp" line="83"/>
+        <location filename="../cli/RunCommand.cpp" line="145"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="87"/>
+        <location filename="../cli/RunCommand.cpp" line="88"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>局番 %1 に送信する内容: %2
 モータが動作または停止します: 送信するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <location filename="../cli/RunCommand.cpp" line="109"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="136"/>
+        <location filename="../cli/RunCommand.cpp" line="137"/>
         <source>Sent to machine number %1: %2</source>
         <translation>局番 %1 に送信しました: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="138"/>
+        <location filename="../cli/RunCommand.cpp" line="139"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>局番 %1 に送信しました（%2 も実行、通信グループ）: %3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="174"/>
+        <location filename="../cli/RunCommand.cpp" line="175"/>
         <source>(not read: %1)</source>
         <translation>（未読出し: %1）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="183"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1:</source>
         <translation>局番 %1 の状態:</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <location filename="../cli/RunCommand.cpp" line="200"/>
         <source>Communication group of %1, read after the command:</source>
         <translation>%1 の通信グループ、コマンド後の読出し:</translation>
     </message>
@@ -13647,7 +13720,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/pages/RunningDataPage.cpp" line="115"/>
         <location filename="../ui/pages/RunningDataPage.cpp" line="315"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="321"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="322"/>
         <source>Initialize SPno%1</source>
         <translation>SPno%1 の初期化</translation>
     </message>
@@ -13699,24 +13772,24 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>ドライバ %2 の運転データ SPno%1 をこれらの工場出荷時設定に戻しますか？</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="327"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="328"/>
         <source>Initializing SPno%1…</source>
         <translation>SPno%1 を初期化中…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="342"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="343"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 は初期化されませんでした: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/pages/RunningDataPage.cpp" line="358"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="359"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 を初期化しました。%n 個の値を読み戻せませんでした</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="360"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="361"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 を工場出荷時設定に初期化しました</translation>
     </message>
@@ -13978,32 +14051,43 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SerialEntry</name>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="27"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>シリアル番号をスキャンまたは入力し、Enter を押してください</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="29"/>
         <source>Cancel unit (Esc)</source>
         <translation>試験をキャンセル (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="85"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="73"/>
+        <source>Serial number NOT taken: %1.</source>
+        <translation>シリアル番号は受け付けられませんでした: %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>シリアル番号 %1 は受け付けられませんでした: ユニット %2 を検査中です。判定が表示されてから再度スキャンしてください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="87"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="104"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="106"/>
         <source>another</source>
         <translation>別のユニット</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="101"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="105"/>
+        <source>A serial number was NOT taken: %1. Unit %2 is being tested.</source>
+        <translation>シリアル番号は受け付けられませんでした: %1。ユニット %2 を検査中です。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="122"/>
         <source>Per-unit value</source>
         <translation>個別値</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="123"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>ドライバ %1: %2 (%3–%4 %5)</translation>
     </message>
@@ -14100,112 +14184,185 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialRule</name>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="65"/>
+        <source>no serial number</source>
+        <translation>シリアル番号がありません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="67"/>
+        <source>a serial number has at most %1 characters; this one has %2</source>
+        <translation>シリアル番号は最大 %1 文字です。このシリアル番号は %2 文字です</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="71"/>
+        <source>a serial number may not hold control characters, format characters or line breaks; character %1 is %2</source>
+        <translation>シリアル番号に制御文字、書式文字や改行は使えません。%1 文字目は %2 です</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="75"/>
+        <source>serial number &quot;%1&quot; begins or ends with white space; a serial number is tested exactly as given</source>
+        <translation>シリアル番号 &quot;%1&quot; の先頭または末尾に空白があります。シリアル番号は入力されたとおりに検査されます</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="85"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2</source>
+        <translation>シリアル番号 &quot;%1&quot; はレシピのシリアル番号パターン %2 に一致しません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="87"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2 (e.g. %3)</source>
+        <translation>シリアル番号 &quot;%1&quot; はレシピのシリアル番号パターン %2 に一致しません (例: %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="104"/>
+        <source>&quot;serialPattern&quot; has %1 characters; at most %2 are allowed</source>
+        <translation>&quot;serialPattern&quot; は %1 文字です。最大 %2 文字までです</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="108"/>
+        <source>&quot;serialPattern&quot; may not hold control characters, format characters or line breaks (no serial number holds one); character %1 is %2</source>
+        <translation>&quot;serialPattern&quot; に制御文字、書式文字や改行は使えません (シリアル番号には含まれません)。%1 文字目は %2 です</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="115"/>
+        <source>&quot;serialPattern&quot; %1 is not a valid regular expression: %2 at character %3</source>
+        <translation>&quot;serialPattern&quot; %1 は正しい正規表現ではありません: %3 文字目で %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="121"/>
+        <source>&quot;serialPattern&quot; %1 cannot be matched against a whole serial number</source>
+        <translation>&quot;serialPattern&quot; %1 はシリアル番号全体と照合できません</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="127"/>
+        <source>&quot;serialExample&quot; needs a &quot;serialPattern&quot; that it matches</source>
+        <translation>&quot;serialExample&quot; には一致する &quot;serialPattern&quot; が必要です</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="130"/>
+        <source>&quot;serialExample&quot;: %1</source>
+        <translation>&quot;serialExample&quot;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="140"/>
+        <source>any, at most %1 characters</source>
+        <translation>任意、最大 %1 文字</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="143"/>
+        <source>%1 (e.g. %2)</source>
+        <translation>%1 (例: %2)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="42"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>パラメータを名前で書き込み、検証・読み戻し・照合します</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="52"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>アドレスでレジスタに書き込みます: ADDR=VALUE（複数指定可。--fc 16 では VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 書込みのファンクションコード: 6（既定）または 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="63"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>エラー: 使い方: set ID NAME=VALUE...（例: set 1 spno2.accel=2.5）、または set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="75"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>エラー: &quot;%1&quot; は NAME=VALUE ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="82"/>
-        <location filename="../cli/SetCommand.cpp" line="91"/>
-        <location filename="../cli/SetCommand.cpp" line="106"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="92"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
-        <location filename="../cli/SetCommand.cpp" line="114"/>
+        <location filename="../cli/SetCommand.cpp" line="105"/>
+        <location filename="../cli/SetCommand.cpp" line="117"/>
         <source>warning: %1</source>
         <translation>警告: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>モータの運転、リセット、消去、初期化、保存を行うコマンドと、シリアル設定ロックの設定を確定します。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="146"/>
+        <location filename="../cli/SetCommand.cpp" line="149"/>
         <source>next: %1</source>
         <translation>次に: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>次に: opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（工場出荷時の通信設定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Parameter</source>
         <translation>パラメータ</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Value</source>
         <translation>値</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="199"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written, verified</source>
         <translation>書込み済み、照合済み</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="201"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>written, not verified: %1</source>
         <translation>書込み済み、未確認: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="202"/>
+        <location filename="../cli/SetCommand.cpp" line="205"/>
         <source>written (command, not readable)</source>
         <translation>書込み済み（コマンド、読出し不可）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="204"/>
+        <location filename="../cli/SetCommand.cpp" line="207"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1): ドライバがその値を保持しているかどうか不明です。&quot;get&quot; で読み戻してください</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="215"/>
+        <location filename="../cli/SetCommand.cpp" line="218"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="222"/>
+        <location filename="../cli/SetCommand.cpp" line="225"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注: ドライバは次回の電源投入から %1 を使用します: ドライバの電源を入れ直し、新しい設定（--baud、--parity）で接続してください</translation>
     </message>
@@ -14416,17 +14573,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="176"/>
+        <location filename="../sim/SimApp.cpp" line="177"/>
         <source>the port is unplugged already</source>
         <translation>ポートはすでに切断されています</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="178"/>
+        <location filename="../sim/SimApp.cpp" line="179"/>
         <source>unplugged</source>
         <translation>切断しました</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="211"/>
+        <location filename="../sim/SimApp.cpp" line="212"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -15280,64 +15437,64 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="22"/>
+        <location filename="../ui/eol/StationActions.cpp" line="24"/>
         <source>Reset alarm and test again</source>
         <translation>アラームリセットして再試験</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="23"/>
+        <location filename="../ui/eol/StationActions.cpp" line="25"/>
         <source>Technician: test again…</source>
         <translation>技術者: 再試験…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <location filename="../ui/eol/StationActions.cpp" line="50"/>
         <source>A technician may allow unit %1 to be tested again.</source>
         <translation>技術者がユニット %1 の再試験を許可できます。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="54"/>
+        <location filename="../ui/eol/StationActions.cpp" line="57"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>局番 %1 のアラームをリセットしています…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="63"/>
+        <location filename="../ui/eol/StationActions.cpp" line="66"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>アラームが解除されていません。何も開始していません:
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="73"/>
+        <location filename="../ui/eol/StationActions.cpp" line="76"/>
         <source>reset the alarm</source>
         <translation>アラームをリセットする</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="79"/>
+        <location filename="../ui/eol/StationActions.cpp" line="82"/>
         <source>serial %1</source>
         <translation>シリアル %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="88"/>
+        <location filename="../ui/eol/StationActions.cpp" line="91"/>
         <source>test serial %1 again</source>
         <translation>シリアル %1 を再試験する</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="102"/>
+        <location filename="../ui/eol/StationActions.cpp" line="105"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>試験前に局番 %1 でアラームが発生していました。何も書き込んでいません。アラームをリセットすると（ドライバ自身のリセット。電源再投入が必要なアラームはその旨を表示します）、製品を再試験します。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="131"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>(no name)</source>
         <translation>（名前なし）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="136"/>
         <source>Test again</source>
         <translation>再試験</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="134"/>
+        <location filename="../ui/eol/StationActions.cpp" line="137"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -15372,22 +15529,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationFigures</name>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="25"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="27"/>
         <source>This shift: no figures yet (%1)</source>
         <translation>このシフト: まだ集計なし（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="26"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="28"/>
         <source>results database not read</source>
         <translation>結果データベースをまだ読み込んでいません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="29"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="31"/>
         <source>This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5</source>
         <translation>このシフト: 試験 %1 · 合格 %2 · 不合格 %3 · ステーションエラー %4 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="35"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="39"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>このステーション、このレシピバージョン、%1 以降（%2 に読込み）。同じ数値を表示するコマンド: %3</translation>
     </message>
@@ -15395,52 +15552,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
         <source>Operator:</source>
         <translation>作業者:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>user name</source>
         <translation>ユーザー名</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
         <source>password</source>
         <translation>パスワード</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
         <source>Log in</source>
         <translation>ログイン</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
         <source>Log in:</source>
         <translation>ログイン:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
         <source>Log out</source>
         <translation>ログアウト</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
         <source>Not logged in: %1</source>
         <translation>ログインできません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>ログイン中: &lt;b&gt;%1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>ユーザーが設定されていません: 誰でも実行・編集・終了できます。opentop-cli eol user add でユーザーを設定してください</translation>
     </message>
@@ -15448,24 +15605,24 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationNotice</name>
     <message numerus="yes">
-        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="31"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>このステーションに結果 %n 件を保管中で、まだ結果データベースにありません: %1。データベースが応答すると順番に自動送信されます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="35"/>
         <source>it does not answer</source>
         <translation>データベースが応答しません</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="38"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>ユニット %1（%2 開始）は完了していません: 検査中にステーションが停止しました。「中断」として記録されています。再検査してください。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="44"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>レシピのドライブを安全な状態にしています: 1 台ずつ読み取り、運転中のものを停止し、制御を入力端子に戻します…</translation>
     </message>
@@ -15965,7 +16122,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="36"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>%1:%2 で待ち受けできません: %3</translation>
     </message>
@@ -16026,7 +16183,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>&lt;b&gt;局番 %1 の試運転&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="53"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="54"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>局番 %1 は既知のファミリのドライバとして識別されていません。試運転には識別が必要です。</translation>
     </message>
@@ -16076,42 +16233,42 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>運転、停止、回転方向、速度選択をドライバの入力端子に戻します</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="160"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="161"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>ドライバが運転コマンドを受け付けるかを確認するための %1 を読み出せません: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="196"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="197"/>
         <source>Not started: the variant of %1 was not given.</source>
         <translation>起動していません：%1 の機種が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="203"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="204"/>
         <source>Reading what the start will run…</source>
         <translation>運転開始時の動作を読出し中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="219"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="220"/>
         <source>Start the motor</source>
         <translation>モータの運転開始</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="233"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="234"/>
         <source>Sending %1…</source>
         <translation>%1 を送信中…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="262"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="263"/>
         <source>Not every drive of its communication group runs: see below.</source>
         <translation>通信グループのすべてのドライバが運転しているわけではありません。下を参照してください。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="280"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="281"/>
         <source>Sent: %1</source>
         <translation>送信済み: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="349"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="350"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>ポーリングが一時停止中です: コントローラは最後のフレームを受信してから %1 s 後にモータにブレーキをかけます (%2)。モータの運転を続けるにはポーリングを再開してください。</translation>
     </message>
@@ -16196,7 +16353,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Pause</source>
         <translation>一時停止(&amp;P)</translation>
     </message>
@@ -16251,17 +16408,17 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>フレーム</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Drive</source>
         <translation>ドライバ</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Requests</source>
         <translation>要求</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Replies</source>
         <translation>応答</translation>
     </message>
@@ -16276,7 +16433,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC エラー</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Exceptions</source>
         <translation>例外</translation>
     </message>
@@ -16292,6 +16449,11 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
+        <source>Late replies</source>
+        <translation>遅延応答</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
@@ -16301,44 +16463,49 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>ドライバ別統計</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="119"/>
+        <source>Frames that answered nothing asked at the time: a reply to an earlier request that came too late, discarded and never taken as a value</source>
+        <translation>その時点の要求に対する応答ではないフレーム: 以前の要求への応答が遅れて届いたもので、破棄され、値としては使われません</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Resume</source>
         <translation>再開(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="320"/>
         <source>Broadcast</source>
         <translation>ブロードキャスト</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
         <source>Drive %1</source>
         <translation>ドライバ %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="309"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個のアドレスが応答しませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="311"/>
         <source>No reply from machine numbers %1</source>
         <translation>局番 %1 から応答なし</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="357"/>
         <source>Save traffic log</source>
         <translation>通信ログを保存</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
         <source>Text files (*.txt)</source>
         <translation>テキストファイル (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="358"/>
         <source>Could not save %1: %2</source>
         <translation>%1 を保存できませんでした: %2</translation>
     </message>
@@ -16461,51 +16628,56 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%1 を開けません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 が開いていません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
         <source>send failed</source>
         <translation>送信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>別の応答が続きました: この応答は以前の要求に対するものの可能性があります</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>ドライブ自身の通信フォーマットにはシリアルポートが必要です。Modbus TCP ゲートウェイは回線を自分で設定します</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>回線を %1 に切り替えられません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
+        <translation>%1 ms 以内に応答なし（以前の要求への遅延応答は破棄しました）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>局番 %1 からの応答（期待値 %2）</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="158"/>
+        <location filename="../transport/RtuBackend.cpp" line="178"/>
         <location filename="../transport/TcpBackend.cpp" line="107"/>
         <source>reply incomplete</source>
         <translation>応答が不完全です</translation>
@@ -16517,24 +16689,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
-        <location filename="../transport/RtuBackend.cpp" line="165"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
+        <translation>遅延応答を破棄: 要求の %1 ms 後に受信完了。応答には線路上で少なくとも %2 ms かかります</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
         <source> (connection closed)</source>
         <translation> (接続切断)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
         <source>stale bytes discarded before sending</source>
         <translation>送信前に残留バイトを破棄しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
         <source>late bytes discarded after an error</source>
         <translation>エラー後に遅延バイトを破棄しました</translation>
     </message>
@@ -16815,7 +16992,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%1 は %2 (PID %3) が使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="95"/>
+        <location filename="../transport/RtuBackend.cpp" line="115"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -16824,17 +17001,17 @@ then log out and in again (the group applies to new sessions only).</source>
 ログアウトして再ログインしてください（グループは新しいセッションにのみ適用されます）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="101"/>
+        <location filename="../transport/RtuBackend.cpp" line="121"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (デバイスがこのパリティに対応していない可能性があります。pty は N が必要です)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="136"/>
+        <location filename="../transport/RtuBackend.cpp" line="156"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>応答が %1 バイトを示していますが、RTU フレームの最大長を超えています</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="157"/>
+        <location filename="../transport/RtuBackend.cpp" line="177"/>
         <source>no reply</source>
         <translation>応答なし</translation>
     </message>
@@ -17115,12 +17292,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>seconds</source>
         <translation>秒</translation>
     </message>
@@ -17290,278 +17467,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="81"/>
+        <location filename="../cli/TuneCommand.cpp" line="82"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>DC コントローラの速度ループのステップ試験とリレーオートチューニング（--yes が必要）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>Run the test (it moves the motor).</source>
         <translation>試験を実行します（モータが動きます）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step: ステップ前の速度（既定 0）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <location filename="../cli/TuneCommand.cpp" line="89"/>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: speed after the step.</source>
         <translation>step: ステップ後の速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step: ステップ後に記録する時間（既定 1500）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune: リレー試験の運転速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune: 出力の振り幅。フル出力に対する %（既定 10）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="94"/>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune: soft、medium（既定）、stiff、tyreus-luyben、zn-pi のいずれか。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="97"/>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune: 提案ゲインを書き込み、運転速度の半分から運転速度までのステップ試験を実行します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
         <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
         <translation>autotune: --accept と併用すると、そのゲインで測定したステップが確認に合格した場合にゲインをドライバに保存します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="104"/>
         <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
         <translation>autotune: --accept と併用すると、測定したステップが確認に不合格でもゲインを残します（--store があれば保存します）。指定しなければドライバの元のゲインを書き戻します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>速度がこの値を超えたら直ちに停止します（既定: 試験の最高速度の 120 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="107"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>電流がこの値 (A) を超えたら直ちに停止します（既定 20）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="108"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>Write the samples to FILE.</source>
         <translation>サンプルを FILE に書き出します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="123"/>
+        <location filename="../cli/TuneCommand.cpp" line="124"/>
         <source>error: usage: %1</source>
         <translation>エラー: 使い方: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="133"/>
+        <location filename="../cli/TuneCommand.cpp" line="134"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>エラー: --%1 は 0 以上の数値でなければなりません（指定値 &apos;%2&apos;）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="155"/>
-        <location filename="../cli/TuneCommand.cpp" line="166"/>
-        <location filename="../cli/TuneCommand.cpp" line="171"/>
-        <location filename="../cli/TuneCommand.cpp" line="374"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="167"/>
+        <location filename="../cli/TuneCommand.cpp" line="172"/>
+        <location filename="../cli/TuneCommand.cpp" line="375"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>step needs --to SPEED</source>
         <translation>step には --to SPEED が必要です</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="157"/>
+        <location filename="../cli/TuneCommand.cpp" line="158"/>
         <source>--rule must be one of %1</source>
         <translation>--rule は %1 のいずれかでなければなりません</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="159"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune には --speed SPEED が必要です</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="175"/>
+        <location filename="../cli/TuneCommand.cpp" line="176"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>局番 %1 のモータを %2 から %3 へ運転し、ステップ応答を記録します。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="181"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>局番 %1 のモータを %2 付近でリレー試験運転します（出力 ±%3 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="186"/>
+        <location filename="../cli/TuneCommand.cpp" line="187"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>モータが動きます: 実行するには --yes を付けてください。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="236"/>
         <source>Machine number %1, gains %2</source>
         <translation>局番 %1、ゲイン %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="237"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  立ち上がり時間 (10–90 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="238"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  overshoot: %1 %</source>
         <translation>  オーバーシュート: %1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="239"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  settling time (2 %): %1</source>
         <translation>  整定時間 (2 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="240"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  定常偏差: %1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="241"/>
+        <location filename="../cli/TuneCommand.cpp" line="242"/>
         <source>  peak current: %1 A</source>
         <translation>  ピーク電流: %1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="267"/>
+        <location filename="../cli/TuneCommand.cpp" line="268"/>
         <source>Step %1 → %2 %3:</source>
         <translation>ステップ %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <location filename="../cli/TuneCommand.cpp" line="273"/>
         <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
         <translation>リレー試験: Ku %1、Tu %2 ms（実測、振幅 ±%3 %4、%5 周期、1 周期あたり読出し %6 回、%7 ms ごと）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <location filename="../cli/TuneCommand.cpp" line="365"/>
         <source>What to change: %1</source>
         <translation>変更すべき点: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="282"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>モデル: ゲイン %1、時定数 %2 ms、むだ時間 %3 ms（バスの %4 ms は除外）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="288"/>
         <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
         <translation>モデル上のドライバ自身のループ: Ku %1、Tu %2 ms</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="290"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
         <source>Proposed (%1): %2</source>
         <translation>提案値 (%1): %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <location filename="../cli/TuneCommand.cpp" line="292"/>
         <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
         <translation>  ルールの P × %1、Ti × %2。予測ステップ %3 → %4 %5: オーバーシュート %6 %、整定時間 %7</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="307"/>
+        <location filename="../cli/TuneCommand.cpp" line="308"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>提案ゲインの書込みに失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="310"/>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
         <source>Proposed gains written (not stored).</source>
         <translation>提案ゲインを書き込みました（未保存）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="313"/>
+        <location filename="../cli/TuneCommand.cpp" line="314"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>このゲインで測定したステップ %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <location filename="../cli/TuneCommand.cpp" line="322"/>
         <source>interrupted</source>
         <translation>中断</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
         <source>Check after Accept: passed. %1</source>
         <translation>採用後の確認: 合格。%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <location filename="../cli/TuneCommand.cpp" line="326"/>
         <source>Check after Accept: FAILED. %1</source>
         <translation>採用後の確認: 不合格。%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <location filename="../cli/TuneCommand.cpp" line="335"/>
         <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
         <translation>元のゲインを書き戻しました (%1)。何も保存していません。--override-check を付けると、それでも提案値を残します（--store があれば保存します）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <location filename="../cli/TuneCommand.cpp" line="339"/>
         <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
         <translation>元のゲインの書き戻しに失敗しました: %1。提案値はドライバに残っています（未保存）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <location filename="../cli/TuneCommand.cpp" line="346"/>
         <source>Storing although the check failed (--override-check).</source>
         <translation>確認は不合格ですが保存します (--override-check)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="354"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Gains stored in the drive.</source>
         <translation>ゲインをドライバに保存しました。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="355"/>
+        <location filename="../cli/TuneCommand.cpp" line="356"/>
         <source>Storing the gains failed: %1</source>
         <translation>ゲインの保存に失敗しました: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="362"/>
+        <location filename="../cli/TuneCommand.cpp" line="363"/>
         <source>Test ended: %1</source>
         <translation>試験終了: %1</translation>
     </message>
@@ -18127,32 +18304,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitLog</name>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Time</source>
         <translation>時刻</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Serial</source>
         <translation>シリアル</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Reason</source>
         <translation>理由</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1、未記録</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="34"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（このステーションに保管）</translation>
     </message>
@@ -18211,97 +18388,97 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="71"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="74"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV ファイルが %1 MB を超えています</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="73"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="76"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>CSV テキストファイルではありません（NUL バイトを含みます）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="94"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>%1 行目: 引用符で囲まれたフィールドが正しく閉じられていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="98"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>%1 行目: ヘッダは &quot;%2&quot; ではなく &quot;serial&quot; で始まる必要があります</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="102"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="105"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>%1 行目: ヘッダに個別値の名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="104"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: more than %2 columns</source>
         <translation>%1 行目: 列が %2 個を超えています</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="108"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="111"/>
         <source>line %1: column %2 has no name</source>
         <translation>%1 行目: 列 %2 に名前がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="110"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="113"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>%1 行目: 列 &quot;%2&quot; が 2 回出現しています</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="119"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="122"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>%1 行目: フィールドが %2 個ですが、ヘッダは %3 個です</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="125"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="128"/>
         <source>line %1: no serial number</source>
         <translation>%1 行目: シリアル番号がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="127"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="130"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>%1 行目: シリアル番号 &quot;%2&quot; はすでに %3 行目にあります</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="134"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="137"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV ファイルが空です。ヘッダ &quot;serial,&lt;parameter&gt;,...&quot; が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="148"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="151"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="189"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="193"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>シリアル番号 &quot;%1&quot; は CSV ファイルにありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="202"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1: 列 &quot;%2&quot; があいまいです（複数の位置にこの個別値があります）。列名を &quot;%3:%2&quot; にしてください</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="210"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1: CSV ファイルにこの個別値の列 &quot;%2&quot;（または &quot;%3:%2&quot;）がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="211"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="215"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>%1 行目、列 &quot;%2&quot;: シリアル番号 &quot;%3&quot; の値がありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="220"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>%1 行目、列 &quot;%2&quot;: &quot;%3&quot; は数値ではありません</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="231"/>
         <source>line %1: %2</source>
         <translation>%1 行目: %2</translation>
     </message>
@@ -18663,12 +18840,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>どのドライバですか？</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="41"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="42"/>
         <source>Not known: check against every variant</source>
         <translation>不明：すべての機種で検査</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="65"/>
         <source>the variant of %1 was not given</source>
         <translation>%1 の機種が指定されていません</translation>
     </message>

@@ -86,107 +86,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="70"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="71"/>
         <source>not read</source>
         <translation>읽지 않음</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="90"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="92"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="93"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="95"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="96"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="98"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="99"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="105"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="106"/>
         <source>%1: could not be read: %2</source>
         <translation>%1: 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="109"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="110"/>
         <source>%1: no records.</source>
         <translation>%1: 기록 없음.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="112"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="113"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1: 기록 %3개 중 %2개, 최신순</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Panel</source>
         <translation>패널</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="124"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="125"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="131"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Cause: %1</source>
         <translation>원인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="133"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>Remedy: %1</source>
         <translation>조치: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="135"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="136"/>
         <source>To clear: %1</source>
         <translation>해제 방법: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="141"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="142"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>통신 오류 레지스터(%1): 읽을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="145"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="146"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>통신 오류 레지스터(%1): 없음(0).</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="148"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="149"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>통신 오류 레지스터(%1): %2, 알 수 없는 코드.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="152"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="153"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -195,57 +195,57 @@
   조치: %5</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>기계 판독용 JSON을 표준 출력으로 출력합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="28"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>송수신하는 모든 프레임을 표준 오류로 출력합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="30"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>드라이버가 기종을 알려주지 않을 때 사용할 기종: VARIANT 또는 ID=VARIANT,... (예: dbu400, 150=dbu400).</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="32"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="34"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>버스에 있는 드라이버, 예: 1,3,5-7 (기본값: OPENTOP_BUS_DRIVES, 없으면 이 연결의 마지막 스캔에서 찾은 드라이버): 쓰기나 명령 전에 통신 그룹을 읽어 함께 도달하는 모든 드라이버를 밝힙니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="37"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
         <translation>버스의 드라이버를 모르는 상태에서도(--bus-drives 없음, 이 연결의 스캔 없음) 통신 그룹 부모일 수 있는 드라이버에 쓰거나 명령합니다: 그룹의 드라이버도 이름이 밝혀지지 않은 채 실행합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="42"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>이 도움말을 표시합니다. 명령 뒤에 쓰면 그 명령의 도움말을 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="44"/>
         <source>Show the version.</source>
         <translation>버전을 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="47"/>
+        <location filename="../cli/CliApp.cpp" line="48"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>사람이 읽는 출력의 언어: en, zh_TW, zh_CN, ko, ja (기본값: 시스템 언어). --json 출력은 모든 언어에서 같습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="49"/>
+        <location filename="../cli/CliApp.cpp" line="50"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -410,19 +410,29 @@
         <translation> 외 %1개</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="27"/>
+        <location filename="../cli/TuneCommand.cpp" line="28"/>
         <source>not reached</source>
         <translation>도달하지 않음</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <location filename="../cli/SetCommand.cpp" line="36"/>
         <source>nothing was written</source>
         <translation>아무것도 쓰지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="60"/>
+        <source>NOT RECORDED (%1)</source>
+        <translation>기록 안 됨 (%1)</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="62"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1 (이 스테이션에 보관)</translation>
     </message>
 </context>
 <context>
@@ -689,89 +699,89 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Kind</source>
         <translation>종류</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Record</source>
         <translation>기록</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Code</source>
         <translation>코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine name</source>
         <translation>기계 이름</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Panel code</source>
         <translation>패널 코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cleared by</source>
         <translation>해제 방법</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cause</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Remedy</source>
         <translation>조치</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="54"/>
         <source>alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="55"/>
         <source>warning</source>
         <translation>경고</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="63"/>
         <source>unknown code</source>
         <translation>알 수 없는 코드</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="105"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="109"/>
         <source>machine %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/alarms/AlarmExport.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="132"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>드라이버 %1대의 기록 %n건을 %2에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="133"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="137"/>
         <source>Not everything could be read: %1</source>
         <translation>일부를 읽지 못했습니다: %1</translation>
     </message>
@@ -974,92 +984,92 @@ Remedy: %5</source>
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="164"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="165"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>알람·경고 이력을 원인과 조치와 함께 표시합니다. 리셋, 삭제</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="171"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>알람 리셋 명령을 보낸 뒤, 알람이 해제되었는지 전원 재투입이 필요한지 알려줍니다(--yes 필요; 알람이 계속 발생 중이면 종료 코드 4).</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>알람·경고 기록을 삭제합니다(--yes 필요).</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="175"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>--reset과 --clear-records를 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="185"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="186"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>오류: 사용법: %1 (국번 하나)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="193"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="194"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="199"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="200"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>오류: 국번 %1(%2)은(는) 알람·경고 기록을 보관하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="206"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>오류: %1 드라이버에는 %2 명령이 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>alarm reset</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>record erase</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="219"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="220"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>다음은 국번 %1의 설정을 변경합니다. 보내려면 --yes를 추가하십시오:</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="223"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="224"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 원인이 제거되었고 전원 재투입으로만 해제되는 알람이 아니면 발생 중인 알람을 해제합니다</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="248"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="249"/>
         <source>Machine number %1 (%2)</source>
         <translation>국번 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="276"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="277"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="300"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="304"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="306"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="307"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -1087,153 +1097,153 @@ Remedy: %5</source>
         <translation>국번 %1의 알람과 경고 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="67"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>알람 리셋 명령을 보냅니다. 알람이 해제되었는지, 전원 재투입으로만 해제되는지 알려줍니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="69"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>드라이버에 보관된 알람·경고 기록을 삭제합니다</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="75"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>이 드라이버는 알람·경고 기록을 보관하지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="105"/>
         <source>Alarm state: %1</source>
         <translation>알람 상태: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="187"/>
         <source>Reading the records…</source>
         <translation>기록을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="203"/>
         <source>No alarm is active.</source>
         <translation>발생 중인 알람이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="205"/>
         <source>Alarm active: %1 %2.</source>
         <translation>알람 발생 중: %1 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="207"/>
         <source>An alarm is active.</source>
         <translation>알람이 발생 중입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="210"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1): Alarm-Reset으로는 어떤 알람도 해제되지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="214"/>
         <source>Could not be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Writes: %1</source>
         <translation>쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="253"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>원인이 제거되었으면 발생 중인 알람을 해제합니다. 일부 알람은 전원 재투입으로만 해제되며, 결과에 표시됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>이 드라이버는 전원 재투입으로만 알람이 해제되도록 설정되어 있습니다(%1).</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="260"/>
         <source>Reset alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="259"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>국번 %1에 알람 리셋 명령을 보내시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>Sending the alarm reset…</source>
         <translation>알람 리셋을 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm reset: %1</source>
         <translation>알람 리셋: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="276"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>드라이버 전원을 끄고 5 s 기다린 뒤 다시 켜십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (기록 %2건)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>the alarm and warning records</source>
         <translation>알람·경고 기록</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>Clear records</source>
         <translation>기록 삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source>Erase %1 of machine %2?</source>
         <translation>국번 %2의 %1을(를) 삭제하시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source> and </source>
         <translation> 및 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>삭제한 기록은 복원할 수 없습니다. 쓰기: %1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="295"/>
         <source>Erase</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>Erasing the records…</source>
         <translation>기록을 삭제하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>삭제됨: %1 (기록 %2건); %3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="313"/>
         <source>read back empty.</source>
         <translation>다시 읽기 결과 비어 있음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>NOT empty when read back.</source>
         <translation>다시 읽기 결과 비어 있지 않음.</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="316"/>
         <source>Erasing failed: %1</source>
         <translation>삭제 실패: %1</translation>
     </message>
@@ -1395,95 +1405,95 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="36"/>
+        <location filename="../cli/BackupCommand.cpp" line="37"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>드라이버의 모든 설정을 백업 파일로 저장합니다(모두 읽은 경우에만 저장)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="42"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>저장할 백업 파일(원자적으로 교체).</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="44"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="45"/>
+        <location filename="../cli/BackupCommand.cpp" line="46"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>연결이 알고 있는 모든 드라이버(시뮬레이션 버스) 또는 스캔으로 찾은 모든 드라이버.</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="53"/>
+        <location filename="../cli/BackupCommand.cpp" line="54"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>오류: 국번을 지정하거나 --all을 주십시오: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="62"/>
-        <location filename="../cli/BackupCommand.cpp" line="243"/>
-        <location filename="../cli/BackupCommand.cpp" line="249"/>
+        <location filename="../cli/BackupCommand.cpp" line="63"/>
+        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="71"/>
+        <location filename="../cli/BackupCommand.cpp" line="72"/>
         <source>scanning the bus for drives…</source>
         <translation>버스에서 드라이버를 스캔하는 중…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="86"/>
+        <location filename="../cli/BackupCommand.cpp" line="87"/>
         <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
         <translation>경고: 국번 %1이(가) 응답했지만 식별에 실패했습니다: 백업하지 않았습니다. 이 국번을 지정해 다시 시도하십시오(backup %1 -o FILE).</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="107"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>오류: %2을(를) 읽는 중 포트 %1이(가) 끊어졌습니다(%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
-        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="112"/>
+        <location filename="../cli/BackupCommand.cpp" line="247"/>
         <source>nothing written to %1</source>
         <translation>%1에 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="118"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>오류: 저장할 파일을 지정하십시오: backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="122"/>
+        <location filename="../cli/BackupCommand.cpp" line="124"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="134"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>interrupted: nothing written</source>
         <translation>중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="138"/>
+        <location filename="../cli/BackupCommand.cpp" line="140"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>오류: %1에서 응답하는 드라이버가 없습니다. 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="166"/>
         <source>machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="224"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>국번 %1을(를) 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="186"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1: 설정 %2개를 요청 %3회로 읽음, %4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="194"/>
+        <location filename="../cli/BackupCommand.cpp" line="196"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1: 읽기 실패, 설정 %3개 중 %2개 읽음(요청 %4회, %5 ms)</translation>
     </message>
@@ -1531,44 +1541,44 @@ Remedy: %5</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="53"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="54"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>읽은 드라이버만 저장합니다. 나머지는 제외됩니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="55"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="56"/>
         <source>Stop after the drive being read</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="83"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="84"/>
         <source>Nothing was read: %1.</source>
         <translation>아무것도 읽지 않았습니다: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="106"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="107"/>
         <source>Waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="110"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
         <source>%v of %m drives</source>
         <translation>드라이버 %m대 중 %v대</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>드라이버 %n대의 설정을 읽는 중…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="122"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="123"/>
         <source>Stopping after the drive being read…</source>
         <translation>지금 읽고 있는 드라이버까지 읽고 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="161"/>
         <source>Not read (cancelled)</source>
         <translation>읽지 않음(취소됨)</translation>
     </message>
@@ -1578,58 +1588,58 @@ Remedy: %5</source>
         <translation>드라이버 %1: 식별되지 않아 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
         <source>Not identified</source>
         <translation>식별 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="153"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>설정 %n개 읽음, %1 ms</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>Value not allowed</source>
         <translation>허용되지 않는 값</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="168"/>
         <source>Read failed</source>
         <translation>읽기 실패</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="183"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="184"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>읽지 못한 드라이버: %1. 아직 아무것도 저장하지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="189"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>읽은 드라이버 %n대를 저장하시겠습니까?</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="213"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="214"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>드라이버 %n대를 %1에 저장했습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="219"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>제외됨(읽지 못함): 드라이버 %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="223"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="224"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -1806,87 +1816,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="24"/>
         <source>Backup file</source>
         <translation>백업 파일</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Label</source>
         <translation>표시 이름</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Registers</source>
         <translation>레지스터</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="39"/>
         <source>&amp;Open…</source>
         <translation>열기(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="40"/>
         <source>Open another backup file</source>
         <translation>다른 백업 파일을 엽니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="41"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="68"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="69"/>
         <source>Backup file %1</source>
         <translation>백업 파일 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="77"/>
         <source>Open backup file</source>
         <translation>백업 파일 열기</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="78"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="100"/>
         <source>File: %1</source>
         <translation>파일: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="101"/>
         <source>Refused: %1</source>
         <translation>거부됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="116"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>, %1 bit/s, 패리티 %2, 스톱 비트 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="118"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1897,17 +1907,17 @@ Drives: %5</source>
 드라이버: %5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2, 펌웨어 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="130"/>
         <source>(variant unknown)</source>
         <translation>(기종 알 수 없음)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="133"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>설정 %n개</numerusform>
@@ -2069,37 +2079,37 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListMenu</name>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="30"/>
         <source>&amp;Name this machine…</source>
         <translation>이 기계에 이름 지정(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="35"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="36"/>
         <source>&amp;Identify again</source>
         <translation>다시 식별(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="46"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="47"/>
         <source>&amp;Remove from list</source>
         <translation>목록에서 제거(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="61"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="62"/>
         <source>Name of %1 (up to %2 characters; empty removes the name):</source>
         <translation>%1의 이름(최대 %2자, 비우면 이름 삭제):</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="67"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="69"/>
         <source>Name this machine</source>
         <translation>이 기계에 이름 지정</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="74"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="76"/>
         <source>Machine number %1 has no name now.</source>
         <translation>국번 %1은(는) 이제 이름이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="75"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="77"/>
         <source>Machine number %1 is now named %2.</source>
         <translation>국번 %1의 이름이 이제 %2입니다.</translation>
     </message>
@@ -2107,133 +2117,133 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="76"/>
         <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
         <translation>국번: 버스에서 드라이브의 주소 (1–247)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="78"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>드라이버의 MONITOR LED: 빨강 알람, 초록 준비, 주황 CW, 하늘색 CCW, 보라 외부 인터럽트, 파랑 메모리 또는 통신 오류, 회색 응답 없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>No.</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="98"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>제어 우선순위</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="73"/>
         <source>How each drive&apos;s machine number is set on its switches:
 %1</source>
         <translation>각 드라이버의 국번을 스위치로 설정하는 방법:
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Switches</source>
         <translation>스위치</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="100"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="101"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="112"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="113"/>
         <source>Two drives may share machine number %1 (%2): check the address switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>두 드라이버가 국번 %1(%2)을(를) 함께 쓰고 있을 수 있습니다: 라인의 모든 드라이버의 주소 스위치를 확인하고, 드라이버마다 다른 국번을 지정한 뒤 전원을 다시 켜십시오. 종단 저항 불량이나 A/B 반대 결선도 응답을 손상시킵니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <source>%1 at %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <location filename="../ui/bus/BusListModel.cpp" line="135"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="147"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="148"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 기종 알 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>상태등 %1: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="174"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="175"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>드라이버 매뉴얼: %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="177"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
         <source>Status light grey: not live — %1</source>
         <translation>상태등 회색: 실시간 아님 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
         <source>No name yet: Name… in the context menu (F2) names this machine</source>
         <translation>아직 이름이 없습니다: 컨텍스트 메뉴의 이름 지정…(F2)으로 이 기계에 이름을 붙입니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="187"/>
         <source>%1: the name given to this machine (F2 changes it)</source>
         <translation>%1: 이 기계에 붙인 이름(F2로 변경)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="189"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="190"/>
         <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
         <translation>이 드라이브로 가는 요청은 포트의 형식이 아니라 드라이브 자체의 통신 형식 %1(으)로 나갑니다. 라인은 트랜잭션 사이에 그 형식으로 전환되었다가 다시 돌아옵니다. 컨텍스트 메뉴의 「통신 형식…」에서 변경하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="196"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="197"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>드라이버가 기종을 알려주지 않습니다. 올바른 한계값으로 값을 검사하도록 컨텍스트 메뉴(기종)에서 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="206"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>드라이버가 I/O 단자로 운전 명령을 받고 있습니다. 버스를 통한 시운전에는 통신 우선이 필요합니다.</translation>
     </message>
@@ -2257,67 +2267,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="133"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="135"/>
         <source>State</source>
         <translation>상태</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="137"/>
         <source>Speed</source>
         <translation>속도</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="139"/>
         <source>Display</source>
         <translation>표시</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="141"/>
         <source>Target</source>
         <translation>목표</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="143"/>
         <source>Load</source>
         <translation>부하</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="145"/>
         <source>Alarm</source>
         <translation>알람</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="147"/>
         <source>Last answer</source>
         <translation>마지막 응답</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="174"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="164"/>
         <source>connection lost; %1</source>
         <translation>연결 끊김; %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="166"/>
         <source>no answer: %1; %2</source>
         <translation>응답 없음: %1; %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="203"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="206"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
@@ -2361,7 +2371,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusPanel.cpp" line="82"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="220"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="221"/>
         <source>%v of %m</source>
         <translation>%m 중 %v</translation>
     </message>
@@ -2376,47 +2386,47 @@ Drives: %5</source>
         <translation>전송 중인 요청이 끝나면 스캔을 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="94"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="95"/>
         <source>Rescan at %1</source>
         <translation>%1(으)로 다시 스캔</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="134"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="135"/>
         <source>Drives on the bus</source>
         <translation>버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="150"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="151"/>
         <source>Name this machine…</source>
         <translation>이 기계에 이름 지정…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="206"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="207"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%m 중 %v (국번 %1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="210"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="211"/>
         <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
         <translation>국번 %1이(가) 응답했지만 식별에 실패했습니다: 재시도 중(%3회 중 %2회째)… 폴링은 스캔이 끝날 때까지 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="222"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="223"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
         <translation>%3에서 국번 %1–%2 스캔 중, 국번당 %4 ms… 폴링은 스캔이 끝날 때까지 기다립니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="294"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="295"/>
         <source>If one is on this bus, add it with Add drive and its line format.</source>
         <translation>버스에 이런 드라이브가 있으면 「드라이브 추가」로 통신 형식과 함께 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="299"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
         <translation>국번 %1이(가) 응답했지만 다시 물어도 식별에 실패했습니다: [드라이버 추가…]로 직접 추가하거나, 통신 설정을 확인한 뒤 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="243"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>전송 중인 요청이 끝나면 취소합니다…</translation>
     </message>
@@ -2428,41 +2438,41 @@ Drives: %5</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="260"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="261"/>
         <source>Did not answer the last scan.</source>
         <translation>마지막 스캔에서 응답하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="266"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>국번 %1에서 스캔이 멈췄습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>국번 %1–%2 스캔 후 취소됨(%4 중 %3): 드라이버 %n대 발견.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="279"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="280"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>국번 %1–%2에서 드라이버 %n대 발견(%3 s).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="320"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="321"/>
         <source>Asking machine number %1…</source>
         <translation>국번 %1에 묻는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="325"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="326"/>
         <source>Machine number %1: %2 added.</source>
         <translation>국번 %1: %2 추가됨.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="327"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="328"/>
         <source>Machine number %1: %2 %3</source>
         <translation>국번 %1: %2 %3</translation>
     </message>
@@ -2480,27 +2490,27 @@ Drives: %5</source>
         <translation>버스 스캔(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="43"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>Last time on %1: %2.</source>
         <translation>지난번 %1: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>지난번 드라이버 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>지난번 드라이버 %1대 복원(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>지난번에 설정한 기종으로 이 국번들의 드라이버를 다시 식별합니다</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="61"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="62"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1에서 아직 알려진 드라이버가 없습니다. 버스를 스캔하여 드라이버를 찾으십시오.</translation>
     </message>
@@ -2587,312 +2597,312 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>PASS</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>ABORTED</source>
         <translation>중지됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
         <source>STATION ERROR</source>
         <translation>스테이션 오류</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="56"/>
         <source>INTERRUPTED</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="58"/>
         <source>NOT FINISHED</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="67"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="71"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="74"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>End-of-line test certificate</source>
         <translation>출하 검사 성적서</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Serial number</source>
         <translation>시리얼 번호</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>%1, revision %2</source>
         <translation>%1, 개정 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Recipe checksum</source>
         <translation>레시피 체크섬</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Recipe approved by</source>
         <translation>레시피 승인자</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
         <source>not approved (station without users)</source>
         <translation>승인 없음(사용자가 없는 스테이션)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (approval %2)</source>
         <translation>%1(승인 %2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Attempt</source>
         <translation>검사 회차</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>%1회차 (이 레시피에서 이 시리얼의 검사 차수)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>집계 안 됨 (검사 회차를 기록하기 전의 기록)</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="92"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="93"/>
         <source>Ended</source>
         <translation>종료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Record</source>
         <translation>기록</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="103"/>
         <source>First failure:</source>
         <translation>첫 불합격 항목:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>이 시리얼은 이전 검사에서 %n회 불합격했습니다. 아래에 그 목록이 있습니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="124"/>
         <source>Drives</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Variant</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>How known</source>
         <translation>확인 방법</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Written</source>
         <translation>쓰기</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Read back</source>
         <translation>다시 읽은 값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Verified</source>
         <translation>검증</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>written</source>
         <translation>쓰기 완료</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>already set</source>
         <translation>이미 설정됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>yes</source>
         <translation>예</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>NO</source>
         <translation>아니요</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>Measurements</source>
         <translation>측정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Step</source>
         <translation>단계</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Quantity</source>
         <translation>측정 항목</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Limits</source>
         <translation>한계값</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>pass</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>Earlier tests of this serial</source>
         <translation>이 시리얼의 이전 검사</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="151"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="161"/>
         <source>Bus traffic around the failure</source>
         <translation>불합격 전후의 버스 통신</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>read from the drive</source>
         <translation>드라이버에서 읽음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>proven by the variant probe</source>
         <translation>기종 확인으로 입증됨</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="180"/>
         <source>confirmed by a person</source>
         <translation>사람이 확인함</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
         <source>ASSUMED, not proven</source>
         <translation>추정, 확인되지 않음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="186"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="192"/>
         <source>not known</source>
         <translation>알 수 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="194"/>
         <source>%1 (assumed)</source>
         <translation>%1 (추정)</translation>
     </message>
@@ -2900,12 +2910,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="26"/>
         <source>End-of-line certificate %1</source>
         <translation>출하 검사 성적서 %1</translation>
     </message>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="54"/>
+        <location filename="../report/CertificatePdf.cpp" line="57"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · %4쪽 중 %3쪽</translation>
     </message>
@@ -2913,7 +2923,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="73"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2928,7 +2938,7 @@ RS-485 Modbus-RTU 모터 드라이버용 커미셔닝 도구.
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="78"/>
+        <location filename="../cli/CliApp.cpp" line="79"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2974,23 +2984,23 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="124"/>
+        <location filename="../cli/CliApp.cpp" line="125"/>
         <source>note: standard output could not be written (closed early, or the disk is full): what the command printed there is lost; the work itself ran to its end and exit status %1 says how it ended</source>
         <translation>참고: 표준 출력에 쓸 수 없습니다(일찍 닫혔거나 디스크가 가득 참). 명령이 그곳에 출력한 내용은 손실되었습니다. 작업 자체는 끝까지 실행되었으며 종료 상태 %1이(가) 결과를 나타냅니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
-        <location filename="../cli/CliApp.cpp" line="242"/>
+        <location filename="../cli/CliApp.cpp" line="190"/>
+        <location filename="../cli/CliApp.cpp" line="245"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>&quot;%1 --help&quot;를 실행해 보십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="208"/>
+        <location filename="../cli/CliApp.cpp" line="210"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1: 알 수 없는 명령 &quot;%2&quot;; 명령: </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="216"/>
+        <location filename="../cli/CliApp.cpp" line="219"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2999,12 +3009,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="230"/>
+        <location filename="../cli/CliApp.cpp" line="233"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2: --%3은(는) 이 명령의 옵션이 아닙니다. &quot;%1 help %2&quot;를 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="241"/>
+        <location filename="../cli/CliApp.cpp" line="244"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3012,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="96"/>
-        <location filename="../cli/CliContext.cpp" line="110"/>
-        <location filename="../cli/CliContext.cpp" line="118"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="111"/>
+        <location filename="../cli/CliContext.cpp" line="119"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="123"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="146"/>
+        <location filename="../cli/CliContext.cpp" line="147"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="258"/>
+        <location filename="../cli/CliContext.cpp" line="259"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="263"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="321"/>
+        <location filename="../cli/CliContext.cpp" line="322"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="325"/>
+        <location filename="../cli/CliContext.cpp" line="326"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="343"/>
+        <location filename="../cli/CliContext.cpp" line="344"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="353"/>
+        <location filename="../cli/CliContext.cpp" line="354"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -3146,32 +3156,32 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CommandReadBack</name>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="43"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 명령 후 다시 읽은 값:</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is running.</source>
         <translation>모터가 운전 중입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is stopped.</source>
         <translation>모터가 정지해 있습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="48"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="50"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="57"/>
         <source>The drives of its communication group, read after the command:</source>
         <translation>명령 후 읽은 통신 그룹의 드라이버:</translation>
     </message>
@@ -3179,95 +3189,95 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="35"/>
+        <location filename="../cli/CompareCommand.cpp" line="36"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>서로 다른 설정을 표시합니다. A, B: 국번, FILE 또는 FILE:ID (차이 유무와 관계없이 종료 코드 0)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="42"/>
+        <location filename="../cli/CompareCommand.cpp" line="43"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>A를 프로파일의 공장 출하값과 비교합니다. 매뉴얼에 기본값이 없는 설정은 목록에 표시하지만 차이로 세지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="69"/>
-        <location filename="../cli/CompareCommand.cpp" line="86"/>
-        <location filename="../cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="70"/>
+        <location filename="../cli/CompareCommand.cpp" line="87"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="63"/>
+        <location filename="../cli/CompareCommand.cpp" line="64"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="73"/>
+        <location filename="../cli/CompareCommand.cpp" line="74"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="105"/>
+        <location filename="../cli/CompareCommand.cpp" line="106"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>오류: %1에 드라이버가 여러 대 있습니다(%2): %1:ID 형식으로 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="108"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>오류: %1에 국번 %2인 드라이버가 없습니다. 포함된 드라이버: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="124"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>오류: compare A B 또는 compare A --defaults (A, B: 국번, FILE 또는 FILE:ID)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="142"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="169"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>A: %1 (%2)</source>
         <translation>A: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="170"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
-        <location filename="../cli/CompareCommand.cpp" line="176"/>
+        <location filename="../cli/CompareCommand.cpp" line="182"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="179"/>
+        <location filename="../cli/CompareCommand.cpp" line="186"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="188"/>
         <source>no differences (%1 settings compared)</source>
         <translation>차이 없음(설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="188"/>
+        <location filename="../cli/CompareCommand.cpp" line="195"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
@@ -3301,13 +3311,13 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
@@ -3332,105 +3342,105 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>선택한 양쪽을 읽어 비교합니다(드라이버는 새로 읽음)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="75"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="78"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="108"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="111"/>
         <source>%1 refused: %2</source>
         <translation>%1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="122"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="125"/>
         <source>Reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side A</source>
         <translation>A쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side B</source>
         <translation>B쪽</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="151"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>Factory defaults</source>
         <translation>공장 출하값</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="158"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="161"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>%1에 사용할 백업 파일과 그 안의 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="165"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="175"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>%1에 사용할 버스의 식별된 드라이버를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="180"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="183"/>
         <source>%1: cannot read %2</source>
         <translation>%1: %2을(를) 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="205"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="208"/>
         <source>Unknown family %1</source>
         <translation>알 수 없는 제품군 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="225"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>factory defaults (%1)</source>
         <translation>공장 출하값 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="236"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
         <source>(no documented default)</source>
         <translation>(문서화된 기본값 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="237"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="240"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="242"/>
         <source>(not held)</source>
         <translation>(포함 안 됨)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="255"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>차이 %n건</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
         <source> in %1 settings compared</source>
         <translation> (설정 %1개 비교)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="262"/>
         <source>Note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="266"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="269"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>문서화된 공장 출하값 없음(차이로 세지 않음): %1</translation>
     </message>
@@ -4790,42 +4800,42 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveName</name>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="18"/>
+        <location filename="../model/bus/DriveName.cpp" line="19"/>
         <source>A machine&apos;s name has at most %1 characters; &quot;%2&quot; has %3.</source>
         <translation>기계 이름은 최대 %1자입니다. &quot;%2&quot;은(는) %3자입니다.</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="29"/>
+        <location filename="../model/bus/DriveName.cpp" line="30"/>
         <source>A machine&apos;s name may not hold control characters or line breaks (U+%1).</source>
         <translation>기계 이름에는 제어 문자나 줄바꿈을 넣을 수 없습니다(U+%1).</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="37"/>
+        <location filename="../model/bus/DriveName.cpp" line="38"/>
         <source>A machine&apos;s name may not hold %1 (a percent sign directly before a digit).</source>
         <translation>기계 이름에는 %1(퍼센트 기호 바로 뒤에 숫자)을 넣을 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="44"/>
+        <location filename="../model/bus/DriveName.cpp" line="47"/>
         <source>machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="45"/>
+        <location filename="../model/bus/DriveName.cpp" line="48"/>
         <source>machine number %1 (%2)</source>
         <translation>국번 %1(%2)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="50"/>
+        <location filename="../model/bus/DriveName.cpp" line="53"/>
         <source>Machine number %1</source>
         <translation>국번 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="51"/>
+        <location filename="../model/bus/DriveName.cpp" line="54"/>
         <source>Machine number %1 (%2)</source>
         <translation>국번 %1(%2)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="68"/>
+        <location filename="../model/bus/DriveName.cpp" line="72"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1(%2)</translation>
     </message>
@@ -4980,7 +4990,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="167"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="169"/>
         <source>Write &amp;all pending</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A)</translation>
     </message>
@@ -4995,66 +5005,66 @@ Configuration changes written but not stored are discarded.</source>
         <translation>모두 다시 읽기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="53"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="55"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>이 드라이버의 모든 페이지에서 쓰기 대기 중인 편집을 모두 쓰고 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="86"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="88"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>설정할 드라이버를 버스 목록에서 선택하십시오.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
         <translation>
             <numerusform>이제 모든 편집이 허용됩니다. 아직 아무것도 쓰지 않았습니다: 모든 쓰기 대기 쓰기가 값 %n개를 보냅니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>쓰기 대기 모두 쓰기(&amp;A) (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="188"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>Reading the drive…</source>
         <translation>드라이버를 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>값 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="145"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="208"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="147"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="210"/>
         <source>Nothing was written: %1</source>
         <translation>아무것도 쓰지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="142"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="222"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="144"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="224"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1: %2 아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="231"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>쓰기 대기 값 %n개를 국번 %1에 쓰기</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="203"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="205"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="235"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="236"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="238"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>값 %n개 쓰는 중…</numerusform>
@@ -5064,88 +5074,88 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolAuditCommand</name>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="34"/>
         <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
         <translation>감사 기록 표시: 누가 로그인, 승인했는지, 권한을 사용했거나 거부당했는지</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
         <translation>audit: T 이후(2026-11-24, 8h, 2d, today).</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
         <source>audit: only this user.</source>
         <translation>audit: 이 사용자만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>NAME</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>audit: only this station.</source>
         <translation>audit: 이 스테이션만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="53"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="62"/>
         <source>error: --since: %1</source>
         <translation>오류: --since: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="74"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="89"/>
         <source>no audit entry matches</source>
         <translation>일치하는 감사 기록이 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>user</source>
         <translation>사용자</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>action</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>detail</source>
         <translation>내용</translation>
     </message>
@@ -5153,49 +5163,49 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="31"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>제품의 성적서: 최신 기록을 PDF로, --json을 주면 JSON으로</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>The results database (see results).</source>
         <translation>결과 데이터베이스(results 참조).</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate: 최신 기록 대신 이 id의 기록.</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="39"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="59"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>오류: 시리얼 번호 하나 또는 --id ID로 기록을 지정하십시오. 사용법: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="67"/>
         <source>error: the serial number is empty</source>
         <translation>오류: 시리얼 번호가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="142"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="73"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="154"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="80"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>오류: 이 프로그램은 PDF를 그릴 수 없습니다(Qt GUI 애플리케이션 아님). --json을 사용하십시오</translation>
     </message>
@@ -5205,28 +5215,28 @@ Configuration changes written but not stored are discarded.</source>
         <translation>오류: %2에 기록 %1이(가) 없습니다(%3)</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="104"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>오류: 기록 %1은(는) 시리얼 번호 %3이(가) 아니라 %2의 기록입니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="114"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="147"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="121"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>오류: %2에 시리얼 번호 %1의 기록이 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="141"/>
         <source>wrote %1</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="145"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="157"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>%1 저장함: 시리얼 번호 %2, %3, 기록 시각 %4</translation>
     </message>
@@ -5234,19 +5244,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="36"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>출하 검사 스테이션: 레시피, 결과 데이터베이스, 제품 성적서</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="41"/>
         <source>Subcommands:
 </source>
         <translation>하위 명령:
 </translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="44"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -5255,22 +5265,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot;로 모든 옵션을 볼 수 있습니다. 각 하위 명령은 자신의 옵션만 받습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="92"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>오류: 하위 명령을 지정하십시오: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="94"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>오류: 알 수 없는 하위 명령 &quot;eol %1&quot;; 하위 명령: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="98"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>&quot;opentop-cli help eol&quot;을 참조하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="114"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>오류: eol %1: --%2은(는) 이 하위 명령의 옵션이 아닙니다. 사용법: eol %3</translation>
     </message>
@@ -5399,37 +5409,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeApproveCommand</name>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="35"/>
         <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
         <translation>서명된 레시피를 라인용으로 승인(엔지니어): 이후 스테이션에서 실행됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="49"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="61"/>
         <source>%1: the recipe is not valid, so it cannot be approved:</source>
         <translation>%1: 레시피가 유효하지 않아 승인할 수 없습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="80"/>
         <source>error: %1; the recipe was not approved</source>
         <translation>오류: %1. 레시피는 승인되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="98"/>
         <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
         <translation>%1 rev. %2을(를) %3이(가) 승인했습니다(승인 %4, 체크섬 %5)</translation>
     </message>
@@ -5437,49 +5447,49 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="27"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>레시피를 드라이버 프로파일(및 CSV 파일의 제품별 값)과 대조하여 검사합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check: 이 CSV 파일에 있는 모든 제품의 제품별 값도 검사합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="54"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="55"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="65"/>
         <source>%1, serial %2</source>
         <translation>%1, 시리얼 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="87"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="91"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="89"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="93"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1이(가) 올바르지 않습니다: 문제 %n건. 이 레시피로는 아무것도 실행할 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="97"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>유효: %1 개정 %2: %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="100"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="107"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>; %1의 제품 %n대 검사함</numerusform>
@@ -5489,220 +5499,220 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>기준 제품(골든 유닛)으로 레시피를 만듭니다: 백업 파일 또는 버스의 드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create: 기준 제품의 백업 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create: 버스에 있는 기준 제품의 드라이버, 예: 1,2 (연결 옵션과 함께).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="49"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create: 제품 이름.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create: 레시피 개정.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create: 기존 레시피 파일을 교체합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="55"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
         <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
         <translation>recipe create --drives: 기준 제품을 레시피 단계대로 한 번 운전하고(모터가 회전합니다) 측정값으로 유지 단계의 한계값을 정합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
         <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
         <translation>recipe create --measure: 측정값 주위의 여유, 측정값의 %로 지정 (기본 25, 최소 해당 파라미터 풀스케일의 5 %).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
         <source>PERCENT</source>
         <translation>퍼센트</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
         <source>recipe create --measure: run the motors.</source>
         <translation>recipe create --measure: 모터 운전을 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="75"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="172"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="282"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>nothing written</source>
         <translation>아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
         <source>%1: %2 settings read</source>
         <translation>%1: 설정 %2개 읽음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="106"/>
         <source>interrupted while reading the golden unit: nothing written</source>
         <translation>기준 제품을 읽는 중 중단됨: 아무것도 저장하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="117"/>
         <source>give its variant with --variant %1=VARIANT</source>
         <translation>--variant %1=기종 으로 기종을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="130"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>Would run the golden unit through the recipe&apos;s steps:</source>
         <translation>기준 제품을 레시피 단계대로 운전하려고 합니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="136"/>
         <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
         <translation>모터가 회전합니다. 운전하려면 --yes를 붙이십시오. 아무것도 운전하지 않았고 아무것도 저장하지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="141"/>
         <source>measuring the golden unit (Ctrl-C stops every motor):</source>
         <translation>기준 제품 측정 중 (Ctrl-C로 모든 모터 정지):</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="146"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="150"/>
         <source>drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="157"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="162"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="170"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>WARNING: %1 is not confirmed stopped</source>
         <translation>경고: %1의 정지가 확인되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="179"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
         <source>limits from the golden unit:</source>
         <translation>기준 제품으로 정한 한계값:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="183"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="189"/>
         <source>  drive %1, step %2: %3</source>
         <translation>  드라이버 %1, 단계 %2: %3</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="206"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="213"/>
         <source>error: %1; usage: eol %2</source>
         <translation>오류: %1; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="218"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>예상치 못한 인수 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="214"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="222"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>--from-backup FILE 또는 --drives LIST 중 하나를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="217"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
         <source>--measure needs the golden unit on the bus: give --drives LIST</source>
         <translation>--measure에는 버스에 연결된 기준 제품이 필요합니다: --drives 목록을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="223"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>--margin is for --measure</source>
         <translation>--margin은 --measure와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
         <source>--margin %1: give a percentage from 1 to 100</source>
         <translation>--margin %1: 1에서 100 사이의 퍼센트를 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>--product NAME으로 제품 이름을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="241"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>--revision REV로 레시피 개정을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="236"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="244"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>-o RECIPE로 저장할 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="248"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>오류: %1이(가) 이미 있습니다. 교체하려면 --force를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="243"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
         <source>error: %1; nothing read</source>
         <translation>오류: %1; 아무것도 읽지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="272"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="278"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="290"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="296"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="308"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>%1 저장함: %2 개정 %3, %4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="303"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="316"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>오류: 레시피가 &quot;eol recipe check&quot;를 통과하지 못합니다. 수정한 뒤 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
@@ -5710,127 +5720,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="61"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>레시피를 표시합니다: 위치, 표시 이름과 단위를 붙인 설정, 단계와 한계값</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="73"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="74"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="84"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>  no settings</source>
         <translation>  설정 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>  setting</source>
         <translation>  설정</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>unit</source>
         <translation>단위</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>  per-unit value</source>
         <translation>  제품별 값</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>range</source>
         <translation>범위</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>from</source>
         <translation>출처</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="99"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="106"/>
         <source>CSV file by serial</source>
         <translation>시리얼 번호별 CSV 파일</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="107"/>
         <source>typed by the operator</source>
         <translation>작업자 입력</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="108"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="112"/>
         <source>  no test steps</source>
         <translation>  검사 단계 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="111"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="115"/>
         <source>  steps:</source>
         <translation>  단계:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="174"/>
         <source>%1, revision %2</source>
         <translation>%1, 개정 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="171"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="180"/>
+        <source>serial numbers: %1</source>
+        <translation>시리얼 번호: %1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="181"/>
         <source>checksum %1</source>
         <translation>체크섬 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>position</source>
         <translation>위치</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>family</source>
         <translation>제품군</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>variants</source>
         <translation>기종</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>firmware</source>
         <translation>펌웨어</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="184"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="194"/>
         <source>any</source>
         <translation>모두</translation>
     </message>
@@ -5838,29 +5853,29 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="27"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>손으로 편집한 레시피를 승인합니다: 검사를 통과할 때만 새 체크섬을 붙입니다</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="49"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>오류: %1이(가) 검사를 통과하지 못했습니다(문제 %n건). 서명하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="56"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="57"/>
         <source>error: %1; not signed</source>
         <translation>오류: %1; 서명하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="68"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="70"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1은(는) 이미 서명되어 있습니다(%2). 변경 사항 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="74"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>%1 서명함: %2 개정 %3, %4</translation>
     </message>
@@ -5868,314 +5883,314 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="73"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>결과 데이터베이스의 제품 목록, 직행률을 표시하거나 CSV로 내보냅니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>결과 데이터베이스: SQLite 파일, sqlite:PATH 또는 postgresql://user@host/db (기본값: OPENTOP_EOL_DB, 없으면 ~/.local/share/opentop/results.db).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results: 이 일련번호만. * 또는 ?가 있으면 대소문자를 구분하지 않는 패턴(&quot;SN-10*&quot;).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results: T 또는 그 이후에 시작한 것 (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: started before T.</source>
         <translation>results: T 이전에 시작한 것.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
         <source>results: only this recipe (product name).</source>
         <translation>results: 이 레시피(제품 이름)만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only this station.</source>
         <translation>results: 이 스테이션만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>results: only the newest N units.</source>
         <translation>results: 최신 제품 N대만.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="102"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results: CSV(RFC 4180)를 표준 출력 또는 -o FILE로.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="107"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield: 근무조 시작 시각(현지 시간, 기본값 06:00,14:00,22:00).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="140"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot;은(는) 시각이 아닙니다. 2026-11-24, 2026-11-24T06:00 (현지 시간, 또는 Z나 +01:00 포함), 8h, 2d, today 또는 yesterday를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="150"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="297"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
         <source>--%1: %2</source>
         <translation>--%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="171"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1이(가) --until %2보다 이전이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
         <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
         <translation>results: 이 버전의 레시피만(eol recipe check가 출력하는 체크섬으로 지정).</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="95"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
         <source>SUM</source>
         <translation>SUM</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="97"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
         <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
         <translation>results: pass, fail, error(스테이션 오류), interrupted, aborted 또는 running.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="104"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
         <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
         <translation>results: 레시피 버전별·근무조별 직행률, 2회 이내 합격률, 최종 합격률과 불합격 원인. 스테이션 오류와 중지는 수율에 넣지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="177"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;: pass, fail, error, interrupted, aborted 또는 running을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="185"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;: 1 이상의 제품 수를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="195"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
         <source>no unit matches</source>
         <translation>일치하는 제품 없음</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>approved by</source>
         <translation>승인자</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>time</source>
         <translation>시간</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>drives</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="231"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>shift</source>
         <translation>근무조</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>serials</source>
         <translation>시리얼 수</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>first pass</source>
         <translation>1회 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>second pass</source>
         <translation>2회 이내 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>last pass</source>
         <translation>최종 합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>passed</source>
         <translation>합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>failed</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>station errors</source>
         <translation>스테이션 오류</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="253"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>Yield per recipe version (station errors and aborts are not counted)</source>
         <translation>레시피 버전별 수율 (스테이션 오류와 중지는 집계하지 않음)</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="261"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>%1: checksum %2</source>
         <translation>%1: 체크섬 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>not finished</source>
         <translation>미완료</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="262"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
         <source>Per shift</source>
         <translation>근무조별</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="282"/>
         <source>Failure reasons</source>
         <translation>불합격 원인</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="277"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="283"/>
         <source>Station errors (not counted in yield)</source>
         <translation>스테이션 오류 (수율에 집계하지 않음)</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="294"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
         <source>wrote %1</source>
         <translation>%1 저장함</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="303"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>오류: 예상치 못한 인수 &quot;%1&quot;; 사용법: eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="309"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
         <source>error: give --csv or --json, not both</source>
         <translation>오류: --csv와 --json 중 하나만 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="313"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="319"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>오류: -o는 CSV 파일을 지정합니다: --csv도 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="318"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="324"/>
         <source>error: --shifts is for --yield</source>
         <translation>오류: --shifts는 --yield와 함께 씁니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="328"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="333"/>
         <source>error: --shifts %1: %2</source>
         <translation>오류: --shifts %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="345"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="372"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="380"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="352"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="382"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="393"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
@@ -6242,153 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="58"/>
+        <location filename="../cli/EolRunCommand.cpp" line="60"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="65"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>사용자가 없는 스테이션에서 검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="76"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>레시피 규칙으로 막힌 재검사(이미 합격한 시리얼, 또는 검사 횟수를 다 쓴 시리얼)를 기술자가 허가합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="113"/>
+        <location filename="../cli/EolRunCommand.cpp" line="115"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2은(는) %3을(를) 허용합니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="140"/>
         <source>any %1 variant</source>
         <translation>모든 %1 기종</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="147"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: 레시피에 국번 %2의 위치가 없습니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="161"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="176"/>
+        <location filename="../cli/EolRunCommand.cpp" line="179"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="207"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <source>--serial: %1; nothing was sent</source>
+        <translation>--serial: %1. 아무것도 보내지 않았습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="218"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="211"/>
+        <location filename="../cli/EolRunCommand.cpp" line="224"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="216"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="305"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>error: %1; nothing was sent</source>
         <translation>오류: %1. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="307"/>
+        <location filename="../cli/EolRunCommand.cpp" line="323"/>
         <source>a technician allows it with --retest</source>
         <translation>기술자가 --retest로 허가할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="259"/>
+        <location filename="../cli/EolRunCommand.cpp" line="272"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>참고: %1. --retest의 허가로 다시 검사합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="276"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="268"/>
+        <location filename="../cli/EolRunCommand.cpp" line="283"/>
         <source>station: %1</source>
         <translation>스테이션: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="313"/>
+        <location filename="../cli/EolRunCommand.cpp" line="329"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="301"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
@@ -6396,45 +6416,45 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunIdentity</name>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="50"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="88"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="53"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="101"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="65"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="107"/>
         <source>refused: %1; nothing was sent</source>
         <translation>거부됨: %1. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="66"/>
         <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
         <translation>이 스테이션에는 사용자가 있습니다: --user NAME으로 검사하는 사람을 지정하십시오(비밀번호는 OPENTOP_PASSWORD 또는 터미널에서)</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="73"/>
         <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
         <translation>오류: 사용자가 있는 스테이션에서는 로그인한 사용자(--user)가 작업자입니다. --operator는 받지 않습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="98"/>
         <source>run-units: recipe checksum %1 is not approved</source>
         <translation>run-units: 레시피 체크섬 %1은(는) 승인되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="113"/>
         <source>refused: %1 Nothing was sent.</source>
         <translation>거부됨: %1 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="123"/>
         <source>%1 logged in; recipe approved by %2 (approval %3)</source>
         <translation>%1 로그인. 레시피 승인자 %2(승인 %3)</translation>
     </message>
@@ -6442,43 +6462,43 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunOutput</name>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="85"/>
-        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <location filename="../cli/EolRunOutput.cpp" line="98"/>
+        <location filename="../cli/EolRunOutput.cpp" line="121"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>ok</source>
         <translation>정상</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>FAIL</source>
         <translation>불합격</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <location filename="../cli/EolRunOutput.cpp" line="165"/>
         <source>rev. %1</source>
         <translation>개정 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <location filename="../cli/EolRunOutput.cpp" line="167"/>
         <source>attempt %1</source>
         <translation>%1회차 검사</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <location filename="../cli/EolRunOutput.cpp" line="174"/>
         <source>the result was NOT recorded: %1</source>
         <translation>결과가 기록되지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <location filename="../cli/EolRunOutput.cpp" line="178"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>결과 데이터베이스가 응답하지 않습니다: 결과는 이 스테이션(%1)에 보관되며, 스테이션 프로그램이 다음에 데이터베이스에 연결될 때 전송됩니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <location filename="../cli/EolRunOutput.cpp" line="183"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>경고: 모터 정지가 확인되지 않았습니다: %1</translation>
     </message>
@@ -6528,42 +6548,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="120"/>
+        <location filename="../model/station/EolStation.cpp" line="121"/>
         <source>a unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="124"/>
+        <location filename="../model/station/EolStation.cpp" line="125"/>
         <source>open a recipe first</source>
         <translation>먼저 레시피를 여십시오</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
+        <location filename="../model/station/EolStation.cpp" line="145"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units: 시리얼 번호 %1: %2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="142"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>not connected to a bus</source>
         <translation>버스에 연결되어 있지 않음</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="146"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>스테이션의 드라이브가 안전해지는 즉시 유닛 %1 검사가 시작됩니다</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="151"/>
-        <source>no serial number</source>
-        <translation>시리얼 번호 없음</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="182"/>
+        <location filename="../model/station/EolStation.cpp" line="185"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>시리얼 %1 재시험, %2 허가: %3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="227"/>
         <source>no unit was started yet</source>
         <translation>아직 검사를 시작한 제품이 없습니다</translation>
     </message>
@@ -6622,102 +6637,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="25"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>오류: 레시피 파일 하나를 지정하십시오. 사용법: eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="39"/>
         <source>no such file</source>
         <translation>파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="40"/>
+        <location filename="../cli/EolSupport.cpp" line="41"/>
         <source>is a directory; name a recipe file</source>
         <translation>디렉터리입니다. 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="42"/>
+        <location filename="../cli/EolSupport.cpp" line="43"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>일반 파일이 아닙니다(장치, FIFO 또는 소켓). 레시피 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="44"/>
+        <location filename="../cli/EolSupport.cpp" line="45"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>레시피 파일의 최대 크기 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="48"/>
+        <location filename="../cli/EolSupport.cpp" line="49"/>
         <source>cannot be read: %1</source>
         <translation>읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="50"/>
-        <location filename="../cli/EolSupport.cpp" line="171"/>
+        <location filename="../cli/EolSupport.cpp" line="51"/>
+        <location filename="../cli/EolSupport.cpp" line="177"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="77"/>
-        <location filename="../cli/EolSupport.cpp" line="188"/>
+        <location filename="../cli/EolSupport.cpp" line="78"/>
+        <location filename="../cli/EolSupport.cpp" line="199"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="84"/>
+        <location filename="../cli/EolSupport.cpp" line="86"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="91"/>
+        <location filename="../cli/EolSupport.cpp" line="95"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1이(가) OpenTOP에서 저장한 후 변경되었으므로(체크섬 불일치) 어느 스테이션에서도 실행하지 않습니다. &quot;opentop-cli eol recipe check %1&quot;로 검사하고, 올바르면 &quot;opentop-cli eol recipe sign %1&quot;로 서명하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="109"/>
+        <location filename="../cli/EolSupport.cpp" line="113"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="140"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>위치 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="135"/>
+        <location filename="../cli/EolSupport.cpp" line="141"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>설정 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="137"/>
+        <location filename="../cli/EolSupport.cpp" line="143"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>제품별 값 %n개</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="138"/>
+        <location filename="../cli/EolSupport.cpp" line="144"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>단계 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="145"/>
+        <location filename="../cli/EolSupport.cpp" line="151"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>저장할 파일(recipe create; results --csv; certificate).</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="146"/>
+        <location filename="../cli/EolSupport.cpp" line="152"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="179"/>
+        <location filename="../cli/EolSupport.cpp" line="188"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>오류: %1에 결과 데이터베이스가 없습니다(아직 기록된 것 없음). --db URL로 지정하십시오</translation>
     </message>
@@ -6749,139 +6764,139 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolUserCommand</name>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <location filename="../cli/EolUserCommand.cpp" line="72"/>
         <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
         <translation>사용자 추가(작업자, 기술자, 엔지니어 또는 관리자). 첫 사용자는 관리자이며 --user가 필요 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <location filename="../cli/EolUserCommand.cpp" line="75"/>
         <source>List the users of the results database</source>
         <translation>결과 데이터베이스의 사용자 목록</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <location filename="../cli/EolUserCommand.cpp" line="77"/>
         <source>Disable a user: they can no longer log in; their records stay</source>
         <translation>사용자 비활성화: 더 이상 로그인할 수 없으며 기록은 남습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <location filename="../cli/EolUserCommand.cpp" line="81"/>
         <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
         <translation>사용자 비밀번호 설정(본인 것은 기존 비밀번호로, 관리자는 누구의 것이든)</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <location filename="../cli/EolUserCommand.cpp" line="90"/>
         <source>user add: operator, technician, engineer or administrator.</source>
         <translation>user add: operator, technician, engineer 또는 administrator.</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
         <source>ROLE</source>
         <translation>역할</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
         <source>user add: the name shown on the screen.</source>
         <translation>user add: 화면에 표시되는 이름.</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <location filename="../cli/EolUserCommand.cpp" line="94"/>
         <source>TEXT</source>
         <translation>텍스트</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="108"/>
-        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <location filename="../cli/EolUserCommand.cpp" line="109"/>
+        <location filename="../cli/EolUserCommand.cpp" line="168"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <location filename="../cli/EolUserCommand.cpp" line="124"/>
         <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
         <translation>사용자 없음: 이 스테이션은 관리되지 않습니다(누구나 실행, 편집, 종료 가능). 첫 관리자 추가: opentop-cli eol user add NAME --role administrator</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>user</source>
         <translation>사용자</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>role</source>
         <translation>역할</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>active</source>
         <translation>활성</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>created</source>
         <translation>생성</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>yes</source>
         <translation>예</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>no (disabled)</source>
         <translation>아니요(비활성)</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <location filename="../cli/EolUserCommand.cpp" line="145"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <location filename="../cli/EolUserCommand.cpp" line="153"/>
         <source>error: --role is one of: %1</source>
         <translation>오류: --role은 다음 중 하나입니다: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <location filename="../cli/EolUserCommand.cpp" line="183"/>
         <source>Present password for %1: </source>
         <translation>%1의 현재 비밀번호: </translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="191"/>
-        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <location filename="../cli/EolUserCommand.cpp" line="194"/>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
         <source>New password for %1: </source>
         <translation>%1의 새 비밀번호: </translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <location filename="../cli/EolUserCommand.cpp" line="203"/>
         <source>user %1 added as %2</source>
         <translation>사용자 %1을(를) %2(으)로 추가했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
         <source>user %1 disabled</source>
         <translation>사용자 %1을(를) 비활성화했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <location filename="../cli/EolUserCommand.cpp" line="221"/>
         <source>password of %1 changed</source>
         <translation>%1의 비밀번호를 변경했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <location filename="../cli/EolUserCommand.cpp" line="230"/>
         <source>error: %1; nothing was changed</source>
         <translation>오류: %1. 아무것도 변경하지 않았습니다</translation>
     </message>
@@ -6935,42 +6950,42 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="99"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="134"/>
         <source>Stopping the drives, then giving control back to their inputs…</source>
         <translation>드라이버를 정지한 뒤 입력 단자로 제어를 되돌리는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="135"/>
         <source>Stopping the drives…</source>
         <translation>드라이버를 정지하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>드라이버 입력 단자로 제어를 되돌리는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Not every drive is safe</source>
         <translation>안전하지 않은 드라이버가 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Could not %1 every drive:</source>
         <translation>모든 드라이버의 %1에 성공하지 못했습니다:</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="162"/>
         <source>Stay connected</source>
         <translation>연결 유지</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="163"/>
         <source>Go on anyway</source>
         <translation>그래도 계속</translation>
     </message>
@@ -7214,27 +7229,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="29"/>
         <source>no such file</source>
         <translation>파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="31"/>
         <source>is a directory; name a backup file</source>
         <translation>디렉터리입니다. 백업 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="33"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>일반 파일이 아닙니다(장치, FIFO 또는 소켓). 백업 파일을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="35"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="43"/>
         <source>error: %1 refused: %2</source>
         <translation>오류: %1 거부됨: %2</translation>
     </message>
@@ -7273,135 +7288,135 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="44"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>파라미터를 이름으로 읽어 공학 단위로 표시합니다(--raw를 주면 레지스터)</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>그룹의 모든 파라미터를 읽습니다(params 참조).</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="51"/>
         <source>Read every readable parameter.</source>
         <translation>읽을 수 있는 모든 파라미터를 읽습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>주소로 레지스터를 읽습니다: ADDR 또는 ADDR:COUNT (0x.. 또는 10진수).</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw의 기능 코드: 읽기는 3(holding) 또는 4(input), 쓰기는 6 또는 16.</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="56"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="64"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>오류: 먼저 국번 하나를 지정하십시오: get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="72"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>오류: 파라미터 이름을 지정하거나 --group, --all, --raw 중 정확히 하나를 주십시오</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="79"/>
-        <location filename="../cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="80"/>
+        <location filename="../cli/GetCommand.cpp" line="210"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="91"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>오류: %1에 그룹 &quot;%2&quot;이(가) 없습니다. 그룹: %3</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>오류: %1은(는) 쓰기 전용 명령이라 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="110"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>오류: %1에 파라미터 &quot;%2&quot;이(가) 없습니다. &quot;opentop-cli params --family %1&quot;을 참조하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="124"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Raw</source>
         <translation>원시값</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Label</source>
         <translation>표시 이름</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="159"/>
         <source>(failed: %1)</source>
         <translation>(실패: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="161"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! 프로파일의 허용 값 밖</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="168"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>오류: 파라미터 %n개를 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="191"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>오류: --raw에는 ADDR 또는 ADDR:COUNT(주소 0x0000–0xFFFF, 개수 1–125)와 --fc 3 또는 4가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Address</source>
         <translation>주소</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Hex</source>
         <translation>16진수</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Decimal</source>
         <translation>10진수</translation>
     </message>
@@ -7485,89 +7500,89 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GoldenMeasureButton</name>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="36"/>
         <source>Measure limits…</source>
         <translation>한계값 측정…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="42"/>
         <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
         <translation>버스의 기준 제품을 레시피 단계대로 한 번 운전하고 측정값으로 유지 단계의 한계값을 정합니다: 측정값 ± 25 % (최소 풀스케일의 5 %), 기존 한계값보다 넓지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="52"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="87"/>
         <source>Measure limits on the golden unit</source>
         <translation>기준 제품으로 한계값 측정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="60"/>
         <source>The recipe has no positions.</source>
         <translation>레시피에 위치가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="61"/>
         <source>The recipe cannot be read: %1</source>
         <translation>레시피를 읽을 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="65"/>
         <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
         <translation>국번 %1은(는) 버스에 있는 드라이버가 아닙니다: 먼저 기준 제품에 연결하고 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="70"/>
         <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
         <translation>기준 제품을 레시피 단계대로 운전하시겠습니까? 다음 모터가 회전합니다:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="76"/>
         <source>Run the motors</source>
         <translation>모터 운전</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="90"/>
         <source>The bus is not connected.</source>
         <translation>버스가 연결되어 있지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Measuring the golden unit…</source>
         <translation>기준 제품 측정 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Stop</source>
         <translation>정지</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="98"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="100"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="102"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="104"/>
         <source>stopped by the user</source>
         <translation>사용자가 정지함</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="103"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="108"/>
         <source>Machine number %1: %2</source>
         <translation>국번 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="120"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1의 정지가 확인되지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="117"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
         <source>No limits were taken: %1</source>
         <translation>한계값을 정하지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="129"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>국번 %1, 단계 %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="130"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="135"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>유지 단계의 한계값을 기준 제품에 맞췄습니다. 확인한 뒤 레시피를 저장하십시오.</translation>
     </message>
@@ -7659,98 +7674,98 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="64"/>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="65"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="72"/>
+        <location filename="../cli/GroupCheck.cpp" line="73"/>
         <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
         <translation>참고: --no-group-check: 통신 그룹 %1의 드라이버(%1에 보낸 것을 함께 실행)는 찾지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <location filename="../cli/GroupCheck.cpp" line="79"/>
         <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
         <translation>오류: 이 버스의 드라이버를 알 수 없어 통신 그룹 %1의 드라이버(%1에 보낸 것을 응답 없이 함께 실행)를 밝힐 수 없습니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <location filename="../cli/GroupCheck.cpp" line="84"/>
         <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
         <translation>먼저 버스를 스캔하거나(opentop-cli scan), --bus-drives LIST로 드라이버를 지정하거나, 확인 없이 보내려면 --no-group-check를 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="108"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>경고: %1의 통신 그룹을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <location filename="../cli/GroupCheck.cpp" line="119"/>
         <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
         <translation>참고: 버스의 드라이버는 %1이며 %2에서 가져왔습니다. 그 후 추가된 드라이버는 다음 스캔까지 알 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="133"/>
+        <location filename="../cli/GroupCheck.cpp" line="134"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>%1과(와) %2 모두에 보내려면 --yes를 추가하십시오. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>not readable</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="192"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Read back from the drives of the group:</source>
         <translation>그룹 드라이버에서 다시 읽은 값:</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="196"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="197"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>verified</source>
         <translation>확인됨</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="198"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>DIFFERS from what was written</source>
         <translation>쓴 값과 다름</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="199"/>
+        <location filename="../cli/GroupCheck.cpp" line="200"/>
         <source>not verified</source>
         <translation>확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="247"/>
+        <location filename="../cli/GroupCheck.cpp" line="248"/>
         <source>off</source>
         <translation>사용 안 함</translation>
     </message>
@@ -7846,12 +7861,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
         <translation>통신 그룹</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Their values are read back afterwards.</source>
         <translation>이후 값을 다시 읽습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="65"/>
         <source>Send, also to %1</source>
         <translation>보내기 (%1에도)</translation>
     </message>
@@ -8097,27 +8112,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::IdentityDialog</name>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="23"/>
         <source>Who is it?</source>
         <translation>누구십니까?</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="25"/>
         <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
         <translation>%1 작업에는 이 스테이션에서 %2 이상의 역할이 필요합니다. 사용자 이름과 비밀번호로 로그인하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="42"/>
         <source>User name:</source>
         <translation>사용자 이름:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="43"/>
         <source>Password:</source>
         <translation>비밀번호:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="62"/>
         <source>Refused: %1</source>
         <translation>거부됨: %1</translation>
     </message>
@@ -8805,79 +8820,127 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>속도, 부하, 상태, 입력, 알람을 실시간으로 봅니다(Ctrl-C로 종료)</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="54"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>드라이버당 샘플 간격(ms), %1–%2 (기본값 500).</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="57"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="58"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>드라이버당 N개 샘플 후 멈춥니다(기본값: Ctrl-C까지).</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="59"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="50"/>
-        <source>Also write every sample to FILE (CSV with a header).</source>
-        <translation>모든 샘플을 FILE에도 저장합니다(헤더가 있는 CSV).</translation>
+        <location filename="../cli/MonitorCommand.cpp" line="61"/>
+        <source>Also write every sample to FILE (CSV with a header; a row with a note where the link was lost and where it came back).</source>
+        <translation>모든 샘플을 FILE에도 저장합니다(헤더가 있는 CSV; 연결이 끊긴 곳과 다시 연결된 곳에 메모 행).</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="65"/>
+        <source>When the link to the bus is lost, exit 1 if it is not back within SECONDS (default: reconnect by itself, 0.5 s to 5 s apart, until Ctrl-C).</source>
+        <translation>버스 연결이 끊겼을 때 SECONDS초 안에 다시 연결되지 않으면 1로 끝냅니다(기본값: Ctrl-C까지 0.5초~5초 간격으로 자동 재연결).</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="67"/>
+        <source>SECONDS</source>
+        <translation>SECONDS</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="79"/>
         <source>error: usage: %1</source>
         <translation>오류: 사용법: %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="89"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>오류: --interval은 %1–%2 ms여야 합니다. 입력값: &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="102"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>오류: --count는 1 이상의 샘플 수(정수)여야 합니다. 입력값: &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="113"/>
+        <source>error: --give-up must be a number of seconds, more than 0 and at most %1, got &quot;%2&quot;</source>
+        <translation>오류: --give-up은 0보다 크고 %1 이하인 초 단위 숫자여야 합니다. 받은 값: &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="125"/>
         <source>error: cannot write %1: %2</source>
         <translation>오류: %1에 쓸 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="134"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="154"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>경고: 국번 %1: %2; 속도는 r/min으로만 표시합니다</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="194"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>오류: %1에 쓸 수 없습니다: %2; 모니터링을 멈췄습니다</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="233"/>
+        <source>%1 link lost: %2 (%3); reconnecting for up to %4 s (Ctrl-C ends)</source>
+        <translation>%1 연결 끊김: %2 (%3); 최대 %4초 동안 다시 연결합니다(Ctrl-C로 끝냄)</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="237"/>
+        <source>%1 link lost: %2 (%3); reconnecting until it is back (Ctrl-C ends)</source>
+        <translation>%1 연결 끊김: %2 (%3); 다시 연결될 때까지 재연결합니다(Ctrl-C로 끝냄)</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="246"/>
+        <source>%1 link back after %2 s: %3; monitoring goes on</source>
+        <translation>%1 %2초 후 연결 복구: %3; 모니터링을 계속합니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="261"/>
+        <source>error: the link to %1 was lost at %2 and is not back after %3 s (--give-up %4): %5; monitoring stopped</source>
+        <translation>오류: %1 연결이 %2에 끊긴 뒤 %3초가 지나도 복구되지 않았습니다(--give-up %4): %5; 모니터링을 멈췄습니다</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="303"/>
         <source>%1 error: %2</source>
         <translation>%1 오류: %2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::MonitorCsv</name>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="33"/>
+        <source>link lost</source>
+        <translation>연결 끊김</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="38"/>
+        <source>link back</source>
+        <translation>연결 복구</translation>
     </message>
 </context>
 <context>
@@ -8897,42 +8960,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Target shown</source>
         <translation>표시 목표값</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Speed shown</source>
         <translation>표시 속도</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="127"/>
+        <location filename="../cli/MonitorOutput.cpp" line="128"/>
         <source>Active alarm</source>
         <translation>발생 중인 알람</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="169"/>
+        <location filename="../cli/MonitorOutput.cpp" line="170"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>code %1</source>
         <translation>코드 %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>active</source>
         <translation>발생 중</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="179"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="180"/>
+        <location filename="../cli/MonitorOutput.cpp" line="181"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -9051,12 +9114,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="33"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="34"/>
         <source>Switch to communication priority…</source>
         <translation>통신 우선으로 전환…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="58"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="59"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -9065,53 +9128,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 &quot;%4&quot;(으)로 전환하면 이 명령들을 버스가 맡게 됩니다: 입력 단자로는 더 이상 모터를 기동·정지할 수 없고, &quot;%2&quot;(으)로 되돌릴 때까지 설비 자체의 조작은 효과가 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
         <source>Switch to communication priority</source>
         <translation>통신 우선으로 전환</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="86"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>국번 %1이(가) 운전, 정지, 방향, 속도 선택을 버스로 받게 됩니다(%2 = &quot;%3&quot;). 그러면 입력 단자로는 더 이상 모터를 기동·정지할 수 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="91"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="92"/>
         <source>Switch</source>
         <translation>전환</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="100"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="101"/>
         <source>Switching to communication priority…</source>
         <translation>통신 우선으로 전환하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="108"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>국번 %1이(가) 이제 버스로 운전 명령을 받습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="110"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="111"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>제어 우선순위를 전환할 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="120"/>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="126"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Return to I/O priority</source>
         <translation>I/O 우선으로 복귀</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="122"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>국번 %1이(가) 다시 입력 단자로 운전, 정지, 방향, 속도 선택을 받고, 버스를 통한 운전 명령은 거부합니다. 입력이 운전 상태이면 모터가 운전합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="129"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="130"/>
         <source>Returning to I/O priority…</source>
         <translation>I/O 우선으로 복귀하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="138"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="139"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>국번 %1이(가) 다시 입력 단자를 따릅니다.</translation>
     </message>
@@ -9153,184 +9216,184 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="38"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>&amp;Write to all</source>
         <translation>모두에 쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="40"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="41"/>
         <source>Write one setting to several drives</source>
         <translation>설정 하나를 여러 드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Machine number</source>
         <translation>국번</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Model</source>
         <translation>모델</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Current value</source>
         <translation>현재 값</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="59"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: another family (%1)</source>
         <translation>쓰지 않음: 다른 제품군(%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="78"/>
         <source>Not written: not identified (%1)</source>
         <translation>쓰지 않음: 식별 안 됨(%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="83"/>
         <source>&amp;Setting:</source>
         <translation>설정(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="89"/>
         <source>New &amp;value:</source>
         <translation>새 값(&amp;V):</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="162"/>
         <source>cannot be read</source>
         <translation>읽을 수 없음</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="165"/>
         <source>reading…</source>
         <translation>읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="193"/>
         <source>read failed: %1</source>
         <translation>읽기 실패: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>드라이버 %1: %2을(를) 아직 알 수 없는데, 허용 값이 이 값에 따라 달라집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="226"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="228"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>드라이버마다 단위가 다릅니다(%1). 하나씩 쓰십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>드라이버 %1에서 허용되지 않음(%2): %3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>드라이버 %1의 통신 그룹에서 허용되지 않습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>None of the selected drives is identified.</source>
         <translation>선택한 드라이버 중 식별된 것이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="261"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="315"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="266"/>
         <source>Allowed on %1</source>
         <translation>%1에서 허용</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="272"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="274"/>
         <source>Warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="273"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="275"/>
         <source>Allowed on %1.</source>
         <translation>%1에서 허용.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="323"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>그래도 드라이버 %n대에 설정하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="322"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="324"/>
         <source>&amp;Set it</source>
         <translation>설정(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>%1을(를) 국번 %2에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Nothing was written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>waiting…</source>
         <translation>대기 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="353"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>%1을(를) 드라이버 %n대에 쓰는 중…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="365"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>드라이버 %n대 중 %1대에 쓰기 및 검증 완료.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
         <source>writing…</source>
         <translation>쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written and verified</source>
         <translation>쓰기 및 검증 완료</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>쓰기 완료, 검증 안 됨(다시 읽을 수 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
         <source>Failed: %1</source>
         <translation>실패: %1</translation>
     </message>
@@ -9338,57 +9401,57 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::NameCommand</name>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="38"/>
+        <location filename="../cli/NameCommand.cpp" line="39"/>
         <source>Name a machine (&quot;Infeed conveyor 3&quot;) or show the names of the bus</source>
         <translation>기계에 이름 지정(&quot;Infeed conveyor 3&quot;) 또는 버스의 이름 표시</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="44"/>
+        <location filename="../cli/NameCommand.cpp" line="45"/>
         <source>error: name takes a machine number and one name; put a name with spaces in quotes: name 1 &quot;Infeed conveyor 3&quot;</source>
         <translation>오류: name에는 국번 하나와 이름 하나를 줍니다. 공백이 있는 이름은 따옴표로 묶으십시오: name 1 &quot;Infeed conveyor 3&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="52"/>
+        <location filename="../cli/NameCommand.cpp" line="53"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="62"/>
+        <location filename="../cli/NameCommand.cpp" line="63"/>
         <source>No machine of this bus has a name yet; give one with: name ID &quot;TEXT&quot;</source>
         <translation>이 버스의 기계에는 아직 이름이 없습니다. 다음으로 지정하십시오: name ID &quot;TEXT&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="77"/>
+        <location filename="../cli/NameCommand.cpp" line="78"/>
         <source>error: &quot;%1&quot; is not a machine number 1–247</source>
         <translation>오류: &quot;%1&quot;은(는) 1–247의 국번이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="87"/>
+        <location filename="../cli/NameCommand.cpp" line="88"/>
         <source>Machine number %1 has no name.</source>
         <translation>국번 %1에는 이름이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="93"/>
+        <location filename="../cli/NameCommand.cpp" line="94"/>
         <source>error: %1 Nothing was changed.</source>
         <translation>오류: %1 아무것도 바꾸지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="106"/>
+        <location filename="../cli/NameCommand.cpp" line="107"/>
         <source>Machine number %1 has no name now.</source>
         <translation>국번 %1은(는) 이제 이름이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="107"/>
+        <location filename="../cli/NameCommand.cpp" line="108"/>
         <source>%1 is named now; messages, files and scans show it.</source>
         <translation>%1에 이름을 붙였습니다. 메시지, 파일, 스캔에 표시됩니다.</translation>
     </message>
@@ -9568,112 +9631,112 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="39"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>Parameter initialisation</source>
         <translation>파라미터 초기화</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="49"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="50"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>드라이버 %1의 모든 설정을 통신 설정까지 포함하여 공장 출하값으로 되돌립니다: 그 후 드라이버는 기본 통신 속도로만 응답할 수 있고, 제어 우선순위는 입력 단자로 돌아갑니다. 모터는 정지해 있어야 합니다. 무엇이든 보내기 전에 이 드라이버에 미치는 영향을 먼저 표시합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="57"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>드라이버 %1의 모든 파라미터 초기화(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="59"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="60"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>드라이버와 변경 내용을 표시하고 먼저 확인합니다</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="87"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="88"/>
         <source>Reading what the initialisation would change…</source>
         <translation>초기화로 변경될 내용을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="111"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="112"/>
         <source>Afterwards:</source>
         <translation>이후:</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="116"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="117"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>이 드라이버에서 쓰지 않은 편집 %n개는 버려집니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>보냄: %1, 국번 %2에만.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>보냄: %1, 국번 %2.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="127"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="133"/>
         <source>Initialise drive %1</source>
         <translation>드라이버 %1 초기화</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Reset every setting of %1 to its factory defaults?</source>
         <translation>%1의 모든 설정을 공장 기본값으로 되돌리시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="142"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="143"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>취소됨. 아무것도 보내지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="150"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="151"/>
         <source>Initialising drive %1…</source>
         <translation>드라이버 %1 초기화 중…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="159"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>드라이버 %1이(가) 초기화를 확인하지 않았습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="161"/>
         <source>Nothing was sent: %1</source>
         <translation>아무것도 보내지 않았습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="173"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>&amp;Reconnect at %1 bit/s after the power-up</source>
         <translation>전원 투입 후 %1 bit/s로 다시 연결(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="177"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="178"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>드라이버 %1 초기화 완료. 값을 다시 읽는 중…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>드라이버 %1 초기화 완료. 값 %n개를 다시 읽을 수 없습니다(이제 기본 통신 설정으로만 응답할 수 있음).</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="187"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="188"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>드라이버 %1을(를) 공장 출하값으로 초기화하고 값을 다시 읽었습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="214"/>
         <source>Reconnecting at %1 bit/s in %2 s…</source>
         <translation>%2 s 후 %1 bit/s로 다시 연결합니다…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="226"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="227"/>
         <source>Reconnect at %1 bit/s from the Bus menu.</source>
         <translation>버스 메뉴에서 %1 bit/s로 다시 연결하십시오.</translation>
     </message>
@@ -10257,32 +10320,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="39"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>생산 모드(&amp;P) (출하 검사)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>출하 검사 스테이션의 작업자 화면. 다시 전환할 때까지 파라미터 편집 불가(Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>&amp;Full screen</source>
         <translation>전체 화면(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="54"/>
         <source>&amp;Station name…</source>
         <translation>스테이션 이름(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>이 출하 검사 스테이션이 모든 유닛에 기록하는 이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="64"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -10291,58 +10354,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 결과를 기록할 수 있을 때까지 어떤 제품도 검사할 수 없습니다. 스테이션이 자동으로 다시 시도합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="91"/>
         <source>Station name</source>
         <translation>스테이션 이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="84"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>이 스테이션이 모든 유닛에 기록하는 이름(한 라인의 각 스테이션은 고유한 이름이 필요합니다):</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="92"/>
         <source>A station needs a name.</source>
         <translation>스테이션에는 이름이 필요합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="93"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>유닛을 검사 중입니다: 완료된 후 이름을 변경하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="110"/>
         <source>Production mode</source>
         <translation>생산 모드</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="111"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>제품 검사 중입니다. 엔지니어링 모드로 돌아가기 전에 검사를 취소(Esc)하거나 끝날 때까지 기다리십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="63"/>
         <source>Results database</source>
         <translation>결과 데이터베이스</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="124"/>
         <source>leave production mode</source>
         <translation>생산 모드 종료</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="171"/>
         <source>A unit is being tested</source>
         <translation>제품 검사 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="172"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>제품 %1을(를) 검사 중입니다. 검사를 취소하고 %2하시겠습니까? 먼저 모터를 정지하며, 제품은 중지됨으로 기록됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="184"/>
         <source>cancelled to %1</source>
         <translation>%1하기 위해 취소함</translation>
     </message>
@@ -10415,42 +10478,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="54"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="56"/>
         <source>Open recipe…</source>
         <translation>레시피 열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="57"/>
         <source>Per-unit values…</source>
         <translation>제품별 값…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="63"/>
         <source>Recipe:</source>
         <translation>레시피:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Now</source>
         <translation>현재</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
         <source>Unit %1: %2…</source>
         <translation>제품 %1: %2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>Recipe not usable</source>
         <translation>레시피 사용 불가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10459,117 +10522,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
         <source>open another recipe</source>
         <translation>다른 레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="228"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 개정 %2 — 드라이버 %n대</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;없음: 제품의 레시피를 여십시오&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>스테이션 %1 · 결과: %2 · 제품별 값: %3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>loaded</source>
         <translation>불러옴</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="118"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>유닛 %1: 먼저 스테이션의 드라이브를 안전 상태로 만드는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="278"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="288"/>
         <source>drive %1 (%2)</source>
         <translation>드라이버 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="280"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>waiting</source>
         <translation>대기 중</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>Unit %1 — attempt %2</source>
         <translation>제품 %1 — %2회차</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="316"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>이 스테이션에 보관됨: 결과 서버가 응답하지 않았습니다. 서버가 응답하면 자동으로 전송됩니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 결과 데이터베이스가 복구된 뒤 %2에 기록했습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="156"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>Unit %1</source>
         <translation>제품 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="331"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="341"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>제품 %1 검사가 %2(으)로 끝났지만 결과가 결과 데이터베이스에 기록되지 않았습니다: %3
 기록될 때까지 검사하지 않습니다. 스테이션이 자동으로 다시 시도합니다(다음 시도 %4). 이 제품은 따로 두십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
         <source>Motor not confirmed stopped</source>
         <translation>모터 정지 확인 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10780,12 +10843,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>저장하면 전원을 다시 켜도 유지되며, 모터가 측정된 대로 진동하거나 오버슈트할 수 있습니다. 거부하면 드라이버의 이전 게인을 다시 씁니다.</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
         <source>Reject the gains</source>
         <translation>게인 거부</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="96"/>
         <source>Store anyway</source>
         <translation>그래도 저장</translation>
     </message>
@@ -10793,22 +10856,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="52"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>가상 터미널을 열 수 없습니다: %1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="69"/>
+        <location filename="../sim/PtySimServer.cpp" line="112"/>
+        <source>%1 is in use by another simulator (PID %2); stop it first, or choose another path for --pty</source>
+        <translation>%1은(는) 다른 시뮬레이터(PID %2)가 사용 중입니다. 먼저 그것을 중지하거나 --pty에 다른 경로를 지정하십시오</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="121"/>
+        <source>cannot create the lock file %1: %2</source>
+        <translation>잠금 파일 %1을(를) 만들 수 없습니다: %2</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="80"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1이(가) 이미 있고 심볼릭 링크가 아닙니다. 교체하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="75"/>
+        <location filename="../sim/PtySimServer.cpp" line="83"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>심볼릭 링크 %1 -&gt; %2을(를) 만들 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="117"/>
+        <location filename="../sim/PtySimServer.cpp" line="162"/>
         <source>the port is plugged in: %1</source>
         <translation>포트가 연결되었습니다: %1</translation>
     </message>
@@ -10900,44 +10973,44 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApproveButton</name>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="16"/>
         <source>Approve…</source>
         <translation>승인…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="21"/>
         <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
         <translation>저장된 레시피를 라인용으로 승인(엔지니어): 사용자가 있는 스테이션은 승인된 레시피만 실행합니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="43"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="65"/>
         <source>Approve recipe</source>
         <translation>레시피 승인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
         <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
         <translation>먼저 레시피를 저장하십시오: 승인되는 것은 저장된 파일의 체크섬입니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="39"/>
         <source>%1 cannot be approved: %2</source>
         <translation>%1을(를) 승인할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="44"/>
         <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
         <translation>이 스테이션에는 사용자가 없습니다: 승인에는 승인자가 기록됩니다. opentop-cli eol user add로 사용자를 설정하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="50"/>
         <source>approve %1 rev. %2</source>
         <translation>%1 rev. %2 승인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="66"/>
         <source>%1 rev. %2 is approved by %3: stations run it.</source>
         <translation>%1 rev. %2을(를) %3이(가) 승인했습니다: 스테이션에서 실행됩니다.</translation>
     </message>
@@ -10963,170 +11036,170 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="62"/>
         <source> (for %1)</source>
         <translation> (%1용)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="94"/>
         <source>the recipe names no product</source>
         <translation>레시피에 제품 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="96"/>
         <source>the recipe has no revision</source>
         <translation>레시피에 개정이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="98"/>
         <source>the recipe names no drive</source>
         <translation>레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="111"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1: 국번 %2은(는) 이미 위치 %3입니다. 제품의 각 드라이버에는 서로 다른 국번이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="133"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 제품군 &quot;%2&quot;; 알려진 제품군: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="139"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1: %2의 국번은 %3–%4입니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="152"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1: %2에 기종 &quot;%3&quot;이(가) 없습니다. 알려진 기종: %4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="154"/>
         <source>none</source>
         <translation>없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="156"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1: 기종 &quot;%2&quot;이(가) 두 번 지정되었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="157"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="164"/>
         <source>%1: variantProof &quot;%2&quot; is not known; use &quot;required&quot; or &quot;operator&quot; (or leave it out)</source>
         <translation>%1: variantProof &quot;%2&quot;은(는) 알 수 없습니다. &quot;required&quot; 또는 &quot;operator&quot;를 쓰십시오 (또는 생략)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="169"/>
         <source>%1: variantProof &quot;operator&quot; needs exactly one allowed variant for the operator to confirm</source>
         <translation>%1: variantProof &quot;operator&quot;에는 작업자가 확인할 허용 기종이 정확히 하나 있어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="174"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="181"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1: 펌웨어 버전 &quot;%2&quot;이(가) 드라이버가 알려주는 버전 형식이 아닙니다(major.minor, 예: &quot;1.5&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="194"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1에 설정 &quot;%2&quot;이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="189"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="196"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1은(는) 레시피로 쓸 수 있는 설정이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="191"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="198"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1은(는) 드라이버의 통신 방식을 정합니다. 레시피로 바꿀 수 없습니다. 바꾸면 검사 도중 스테이션이 드라이버와 통신할 수 없게 됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: setting %2</source>
         <translation>%1: 설정 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="216"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="223"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="288"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="222"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="229"/>
         <source>%1 is given twice</source>
         <translation>%1이(가) 두 번 지정되었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="230"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="237"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1: 허용 범위가 %2에 따라 달라지는데 레시피가 이를 설정하지 않습니다. 설정에 %2을(를) 추가하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="239"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="246"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1은(는) %2의 허용 범위를 정합니다. 레시피에서 %2도 설정하십시오. 그렇지 않으면 드라이버에 더 이상 유효하지 않은 값이 남을 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="255"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="323"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="262"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="330"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1: 단위가 &quot;%2&quot;이지만 드라이버 값의 단위는 &quot;%3&quot;입니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="276"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
         <source>%1: per-unit value %2</source>
         <translation>%1: 제품별 값 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="287"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="294"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1이(가) 두 번 지정되었습니다(설정 또는 제품별 값으로)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="293"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="300"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1: 범위의 최솟값 %2이(가) 최댓값 %3보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1: 허용 범위가 레시피에서 설정하지 않는 %2에 따라 달라집니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="328"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1은(는) 숫자가 아닙니다. 제품별 값에는 숫자 설정이 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="327"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="334"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1: 범위 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="340"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1이(가) 드라이버 허용 범위를 벗어납니다: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="345"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="352"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1에 드라이버가 허용하지 않는 값이 포함되어 있습니다. 허용: %2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1: 제품별 값 %2: %3%4이(가) 레시피 범위 %5–%6%4을(를) 벗어납니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="382"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="389"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1: 레시피에 제품별 값 %2이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="392"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>레시피에 국번 %1의 드라이버가 없습니다</translation>
     </message>
@@ -11139,136 +11212,136 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>레시피 편집기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="61"/>
         <source>Revision:</source>
         <translation>개정:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Product:</source>
         <translation>제품:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Description:</source>
         <translation>설명:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="65"/>
         <source>Position:</source>
         <translation>위치:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from drives on the bus…</source>
         <translation>버스의 드라이버로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from backup file…</source>
         <translation>백업 파일로 새로 만들기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Open…</source>
         <translation>열기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save</source>
         <translation>저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save as…</source>
         <translation>다른 이름으로 저장…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
         <source>%1: %2%3</source>
         <translation>%1: %2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>버스에 있는 기준 제품의 드라이버나 그 백업 파일로 레시피를 만들거나, 레시피를 여십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
         <source>the recipe is empty</source>
         <translation>레시피가 비어 있습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>레시피가 검사를 통과했습니다: 저장하고 실행할 수 있습니다.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>문제 %n건: 수정할 때까지 레시피를 저장할 수 없습니다.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>레시피가 검사를 통과하지 못했습니다(문제 %n건). 아무것도 저장하지 않았습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>%1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1은(는) OpenTOP 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1</source>
         <translation>%1 열림</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>%1을(를) 열었지만 그대로는 불러올 수 없습니다(%2). 저장하면 검사 후 다시 서명합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Open recipe</source>
         <translation>레시피 열기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="326"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>레시피 (*.json);;모든 파일 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="336"/>
         <source>Save recipe</source>
         <translation>레시피 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
         <source>Recipes (*.json)</source>
         <translation>레시피 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="343"/>
         <source>Saved and signed: %1</source>
         <translation>저장 및 서명 완료: %1</translation>
     </message>
@@ -11276,12 +11349,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="268"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1이(가) 레시피 파일의 최대 크기 %2 MB보다 큽니다. 레시피 파일이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="276"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -11355,88 +11428,88 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="47"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>JSON 파일이 아닙니다: 바이트 %2에서 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="51"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="52"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>OpenTOP 레시피 파일이 아닙니다: JSON이 객체가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="74"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="78"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;: 레시피에 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="79"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="83"/>
         <source>%1: must be an object</source>
         <translation>%1: 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="100"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;이 &quot;%2&quot;이(가) 아니라 &quot;%1&quot;입니다)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="98"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="102"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>OpenTOP 레시피 파일이 아닙니다(&quot;format&quot;: &quot;%1&quot; 없음)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot;은 1 이상의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="105"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>더 새로운 OpenTOP에서 저장한 파일입니다(레시피 형식 버전 %1). 이 버전은 레시피 형식 버전 %2을(를) 읽습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="111"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>레시피에 체크섬이 없습니다(&quot;checksum&quot;: &quot;sha256:…&quot;). OpenTOP에서 저장한 파일이 아니거나 저장 후 변경되었습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="117"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="121"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>레시피가 저장된 후 변경되었습니다(체크섬 불일치). 변경을 승인하려면 OpenTOP에서 열어 저장하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="138"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1: &quot;machineNumber&quot;는 국번 1–247이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="136"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="213"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="140"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="217"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="181"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="185"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2): &quot;value&quot;는 숫자 또는 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="197"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="201"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2): &quot;source&quot;는 &quot;%3&quot;이(가) 아니라 &quot;csv&quot; 또는 &quot;operator&quot;여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="214"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1: 알 수 없는 단계 유형 &quot;%2&quot;; 알려진 유형: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="226"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="230"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1: &quot;spno&quot;는 2와 같은 운전 데이터 번호여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="239"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="241"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1: &quot;direction&quot;은 &quot;cw&quot; 또는 &quot;ccw&quot;여야 합니다</translation>
     </message>
@@ -11461,62 +11534,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>%1: 한계값에는 &quot;lower&quot;, &quot;upper&quot; 또는 둘 다 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="313"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="325"/>
         <source>&quot;retest&quot; must be an object</source>
         <translation>&quot;retest&quot;는 객체여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="322"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="334"/>
         <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
         <translation>retest: &quot;maxAttempts&quot;는 0(제한 없음)부터 100까지의 정수여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="332"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
         <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
         <translation>retest: &quot;passedSerial&quot;은 &quot;%1&quot;이(가) 아니라 technician, refuse 또는 allow여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="356"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1: 알 수 없는 키 &quot;%2&quot;; 허용: %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot;은(는) 비어 있지 않은 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="359"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot;은(는) 텍스트여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1: &quot;%2&quot;은(는) 텍스트 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="374"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="386"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1: &quot;%2&quot;은(는) 비어 있지 않은 텍스트의 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="396"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1: &quot;%2&quot;은(는) 숫자여야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="410"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="422"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot;은(는) 목록이어야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="413"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="425"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot;에 항목이 %3개 있습니다. 최대 %4개까지 허용됩니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="419"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="431"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;: 모든 항목은 객체여야 합니다</translation>
     </message>
@@ -11524,141 +11597,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>제품군의 모든 기종, 예: dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>모든 펌웨어, 예: 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>단위</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>최소</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>최대</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>출처</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add per-unit value…</source>
         <translation>제품별 값 추가…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add setting…</source>
         <translation>설정 추가…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="138"/>
         <source>Remove</source>
         <translation>제거</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Settings</source>
         <translation>설정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
         <source>Per-unit values</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Test steps</source>
         <translation>테스트 단계</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Machine number:</source>
         <translation>국번:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Name:</source>
         <translation>이름:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Family:</source>
         <translation>제품군:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed variants:</source>
         <translation>허용 기종:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Allowed firmware:</source>
         <translation>허용 펌웨어:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="186"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="337"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>CSV file</source>
         <translation>CSV 파일</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="229"/>
         <source>typed by the operator</source>
         <translation>작업자 입력</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="279"/>
         <source>(unknown: %1)</source>
         <translation>(알 수 없음: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a per-unit value</source>
         <translation>제품별 값 추가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a setting</source>
         <translation>설정 추가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="343"/>
         <source>Setting:</source>
         <translation>설정:</translation>
     </message>
@@ -12027,92 +12100,92 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>Step</source>
         <translation>단계</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>What it does</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="55"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="56"/>
         <source>Add step</source>
         <translation>단계 추가</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
         <source>Remove</source>
         <translation>삭제</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
         <source>Move up</source>
         <translation>위로</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="63"/>
         <source>Move down</source>
         <translation>아래로</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
         <source>(unknown step: %1)</source>
         <translation>(알 수 없는 단계: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="215"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
         <source>No step selected</source>
         <translation>선택된 단계 없음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="217"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>단계를 추가하거나 편집할 단계를 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="222"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="223"/>
         <source>Step %1: %2</source>
         <translation>단계 %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="247"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
         <source>This step has no settings.</source>
         <translation>이 단계에는 설정 항목이 없습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="323"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
         <source>(unknown: %1)</source>
         <translation>(알 수 없음: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
         <source>Parameter:</source>
         <translation>파라미터:</translation>
     </message>
@@ -12120,54 +12193,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::Reconnection</name>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <location filename="../ui/main/Reconnection.cpp" line="31"/>
         <source>&amp;Reconnect</source>
         <translation>다시 연결(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <location filename="../ui/main/Reconnection.cpp" line="38"/>
         <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
         <translation>같은 드라이버와 페이지로 마지막 연결을 다시 엽니다 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <location filename="../ui/main/Reconnection.cpp" line="92"/>
         <source>Reconnecting to %1…</source>
         <translation>%1에 다시 연결하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <location filename="../ui/main/Reconnection.cpp" line="123"/>
         <source>Reconnected to %1: reading every drive again…</source>
         <translation>%1에 다시 연결했습니다: 모든 드라이버를 다시 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <location filename="../ui/main/Reconnection.cpp" line="176"/>
         <source>Reconnected to %1.</source>
         <translation>%1에 다시 연결했습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <location filename="../ui/main/Reconnection.cpp" line="200"/>
         <source>Reconnecting failed: %1</source>
         <translation>다시 연결 실패: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="217"/>
-        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <location filename="../ui/main/Reconnection.cpp" line="218"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
         <source>Connection lost</source>
         <translation>연결 끊김</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="223"/>
-        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <location filename="../ui/main/Reconnection.cpp" line="226"/>
+        <location filename="../ui/main/Reconnection.cpp" line="267"/>
         <source>Reconnect</source>
         <translation>다시 연결</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <location filename="../ui/main/Reconnection.cpp" line="268"/>
         <source>Go on anyway</source>
         <translation>그래도 계속</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <location filename="../ui/main/Reconnection.cpp" line="269"/>
         <source>Cancel</source>
         <translation>취소</translation>
     </message>
@@ -12337,118 +12410,118 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="37"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>백업 파일이 드라이버에서 바꿀 내용을 표시합니다. --yes를 주면 쓰고 검증합니다</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>파일에서 이 드라이버만 복원합니다. 예: 1,5-7.</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>드라이버를 읽고 계획을 표시합니다. 아무것도 쓰지 않습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="45"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>계획을 씁니다(없으면 restore는 계획만 표시).</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="54"/>
+        <location filename="../cli/RestoreCommand.cpp" line="55"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1: 드라이버 설정을 읽지 못했습니다. 비교하지 않았고 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="60"/>
-        <location filename="../cli/RestoreCommand.cpp" line="98"/>
+        <location filename="../cli/RestoreCommand.cpp" line="61"/>
+        <location filename="../cli/RestoreCommand.cpp" line="99"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>file value</source>
         <translation>파일 값</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>device value</source>
         <translation>장치 값</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>action</source>
         <translation>동작</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="81"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>쓰기 및 검증 %1, 변경 없음 %2, 실패 %3, 시도 안 함 %4</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="87"/>
         <source>, %1 not confirmed</source>
         <translation>, 확인 안 됨 %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="88"/>
+        <location filename="../cli/RestoreCommand.cpp" line="89"/>
         <source>; %1 of %2 store commands written</source>
         <translation>; 저장 명령 %2개 중 %1개 씀</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="123"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>오류: 백업 파일 하나를 지정하십시오: restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="137"/>
+        <location filename="../cli/RestoreCommand.cpp" line="138"/>
         <source>error: --ids: %1</source>
         <translation>오류: --ids: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="142"/>
+        <location filename="../cli/RestoreCommand.cpp" line="144"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>오류: %1에 국번 %2인 드라이버가 없습니다. 포함된 드라이버: %3</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="165"/>
         <source>error: %1; nothing written</source>
         <translation>오류: %1; 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="181"/>
+        <location filename="../cli/RestoreCommand.cpp" line="184"/>
         <source>error: %1: %2</source>
         <translation>오류: %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="205"/>
         <source>%1: not attempted</source>
         <translation>%1: 시도 안 함</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="234"/>
         <source>dry run: nothing written</source>
         <translation>시험 실행(dry run): 아무것도 쓰지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="229"/>
+        <location filename="../cli/RestoreCommand.cpp" line="235"/>
         <source>nothing written; add --yes to write</source>
         <translation>아무것도 쓰지 않았습니다. 쓰려면 --yes를 추가하십시오</translation>
     </message>
@@ -12496,161 +12569,161 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>파일:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>드라이버를 읽고 바뀔 내용을 표시합니다. 아무것도 쓰지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>미리 본 변경 사항을 쓰고, 각각 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈춥니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>보고서를 텍스트로 저장합니다. 이름이 .csv로 끝나면 CSV로 저장합니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="64"/>
         <source>C&amp;lose</source>
         <translation>닫기(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="112"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="113"/>
         <source>%1: no such file</source>
         <translation>%1: 파일이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="117"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
         <source>the file could not be read</source>
         <translation>파일을 읽을 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="119"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="179"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>거부됨, 아무것도 쓰지 않습니다: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="123"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="124"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>파일에 드라이버 %n대가 있습니다. 복원할 항목을 선택한 뒤 미리 보기를 누르십시오.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="145"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="146"/>
         <source>Refused, nothing written:</source>
         <translation>거부됨, 아무것도 쓰지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="147"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Drive %1 from %2: %3</source>
         <translation>드라이버 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="177"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
         <source>Choose a backup file first.</source>
         <translation>먼저 백업 파일을 선택하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="193"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="194"/>
         <source>Nothing was read or written: %1.</source>
         <translation>아무것도 읽거나 쓰지 않았습니다: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Reading drive %1…</source>
         <translation>드라이버 %1 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Writing drive %1…</source>
         <translation>드라이버 %1 쓰는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="93"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="94"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>드라이버 %1: %2 (%m 중 %v)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="228"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>진행 중인 쓰기의 검증이 끝나면 멈추는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="243"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="324"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="329"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="244"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="325"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="330"/>
         <source>Drive %1: %2</source>
         <translation>드라이버 %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="246"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="247"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>쓸 설정 %n개</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="253"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="254"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="256"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>아직 아무것도 쓰지 않았습니다. 적용하려면 드라이버에 쓰기를 누르십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="258"/>
         <source>Nothing written.</source>
         <translation>아무것도 쓰지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="305"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
         <source>Restore from backup file</source>
         <translation>백업 파일에서 복원</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="307"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 백업 (*.json);;모든 파일 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="332"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="333"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>설정 %n개를 드라이버 %1에 쓰고 각각 다시 읽어 검증하시겠습니까?</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>Write to drives</source>
         <translation>드라이버에 쓰기</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>&amp;Write</source>
         <translation>쓰기(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="342"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
         <source>Save restore report</source>
         <translation>복원 보고서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="344"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>텍스트 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="348"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="349"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -12826,62 +12899,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="17"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="18"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>쓰기 및 검증 %1, 변경 없음 %2, 실패 %3, 시도 안 함 %4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="23"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>, %1 not confirmed</source>
         <translation>, 확인 안 됨 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="25"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="26"/>
         <source>; %1 of %2 store commands written</source>
         <translation>; 저장 명령 %2개 중 %1개 씀</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 복원 보고서</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>File: %1</source>
         <translation>파일: %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="36"/>
         <source>Date: %1 (UTC)</source>
         <translation>날짜: %1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Written to the drives</source>
         <translation>드라이버에 씀</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Preview only: nothing written</source>
         <translation>미리 보기만: 아무것도 쓰지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="41"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="42"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>국번 %1 (%2에서): %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="52"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: %2</source>
         <translation>  %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="54"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="55"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1: 파일 %2, 드라이버 %3: %4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="60"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="61"/>
         <source>  Note: %1</source>
         <translation>  참고: %1</translation>
     </message>
@@ -13066,148 +13139,148 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="61"/>
         <source>End-of-line results</source>
         <translation>출하 검사 결과</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Started</source>
         <translation>시작</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Recipe</source>
         <translation>레시피</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Station</source>
         <translation>스테이션</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Time (s)</source>
         <translation>시간 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>First failure</source>
         <translation>첫 불합격 항목</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
         <source>Export CSV…</source>
         <translation>CSV 내보내기…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Certificate PDF…</source>
         <translation>성적서 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1에 아직 결과 데이터베이스가 없습니다: 스테이션이 첫 제품을 기록할 때 만들어집니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="142"/>
         <source>Opening the results database %1…</source>
         <translation>결과 데이터베이스 %1을(를) 여는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Results database %1</source>
         <translation>결과 데이터베이스 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="178"/>
         <source>Searching…</source>
         <translation>검색하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="189"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="278"/>
         <source>the results database is not open</source>
         <translation>결과 데이터베이스가 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="220"/>
         <source>%1 rev. %2</source>
         <translation>%1 개정 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="224"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="239"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>제품 %n대: 합격 %1, 불합격 %2, 스테이션 오류 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
         <source>no unit is selected</source>
         <translation>선택한 제품이 없습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
         <source>Reading unit %1…</source>
         <translation>제품 %1을(를) 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="307"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>제품 기록을 아직 읽는 중입니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>Export units as CSV</source>
         <translation>제품을 CSV로 내보내기</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 파일 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>제품 %n대를 %1에 저장했습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Save certificate</source>
         <translation>성적서 저장</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 파일 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="338"/>
         <source>Certificate written to %1</source>
         <translation>성적서를 %1에 저장했습니다</translation>
     </message>
@@ -13355,62 +13428,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="49"/>
+        <location filename="../cli/RunCommand.cpp" line="50"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>시운전: 기동, 정지, 방향, 운전 데이터, hold/free, 속도 (--yes 필요)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="54"/>
+        <location filename="../cli/RunCommand.cpp" line="55"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>명령을 보냅니다(모터를 움직이거나 정지시킴).</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="64"/>
+        <location filename="../cli/RunCommand.cpp" line="65"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>오류: 사용법: %1 (국번 하나; 음수 속도는 -- 뒤에)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="72"/>
-        <location filename="../cli/RunCommand.cpp" line="77"/>
-        <location filename="../cli/RunCommand.cpp" line="82"/>
-        <location filename="../cli/RunCommand.cpp" line="144"/>
+        <location filename="../cli/RunCommand.cpp" line="73"/>
+        <location filename="../cli/RunCommand.cpp" line="78"/>
+        <location filename="../cli/RunCommand.cpp" line="83"/>
+        <location filename="../cli/RunCommand.cpp" line="145"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="87"/>
+        <location filename="../cli/RunCommand.cpp" line="88"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>국번 %1에 보낼 명령: %2
 모터를 움직이거나 정지시킵니다: 보내려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <location filename="../cli/RunCommand.cpp" line="109"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="136"/>
+        <location filename="../cli/RunCommand.cpp" line="137"/>
         <source>Sent to machine number %1: %2</source>
         <translation>국번 %1에 보냄: %2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="138"/>
+        <location filename="../cli/RunCommand.cpp" line="139"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>국번 %1에 보냄, %2에서도 실행됨(통신 그룹): %3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="174"/>
+        <location filename="../cli/RunCommand.cpp" line="175"/>
         <source>(not read: %1)</source>
         <translation>(읽지 않음: %1)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="183"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1:</source>
         <translation>국번 %1의 상태:</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <location filename="../cli/RunCommand.cpp" line="200"/>
         <source>Communication group of %1, read after the command:</source>
         <translation>%1의 통신 그룹, 명령 후 읽음:</translation>
     </message>
@@ -13647,7 +13720,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/pages/RunningDataPage.cpp" line="115"/>
         <location filename="../ui/pages/RunningDataPage.cpp" line="315"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="321"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="322"/>
         <source>Initialize SPno%1</source>
         <translation>SPno%1 초기화</translation>
     </message>
@@ -13699,24 +13772,24 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>드라이버 %2의 운전 데이터 SPno%1을(를) 이 공장 출하값으로 되돌리시겠습니까?</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="327"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="328"/>
         <source>Initializing SPno%1…</source>
         <translation>SPno%1 초기화 중…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="342"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="343"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1을(를) 초기화하지 못했습니다: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/pages/RunningDataPage.cpp" line="358"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="359"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 초기화 완료. 값 %n개를 다시 읽을 수 없습니다</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="360"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="361"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1을(를) 공장 출하값으로 초기화했습니다</translation>
     </message>
@@ -13978,32 +14051,43 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SerialEntry</name>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="27"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>시리얼 번호를 스캔하거나 입력한 뒤 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="29"/>
         <source>Cancel unit (Esc)</source>
         <translation>제품 취소 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="85"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="73"/>
+        <source>Serial number NOT taken: %1.</source>
+        <translation>시리얼 번호가 접수되지 않았습니다: %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>일련번호 %1은(는) 접수되지 않았습니다: 유닛 %2을(를) 검사 중입니다. 판정이 표시된 후 다시 스캔하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="87"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="104"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="106"/>
         <source>another</source>
         <translation>다른 유닛</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="101"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="105"/>
+        <source>A serial number was NOT taken: %1. Unit %2 is being tested.</source>
+        <translation>시리얼 번호가 접수되지 않았습니다: %1. 유닛 %2을(를) 검사 중입니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="122"/>
         <source>Per-unit value</source>
         <translation>제품별 값</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="123"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>드라이버 %1: %2 (%3–%4 %5)</translation>
     </message>
@@ -14100,112 +14184,185 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialRule</name>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="65"/>
+        <source>no serial number</source>
+        <translation>시리얼 번호 없음</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="67"/>
+        <source>a serial number has at most %1 characters; this one has %2</source>
+        <translation>시리얼 번호는 최대 %1자입니다. 이 번호는 %2자입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="71"/>
+        <source>a serial number may not hold control characters, format characters or line breaks; character %1 is %2</source>
+        <translation>시리얼 번호에는 제어 문자, 서식 문자나 줄바꿈을 넣을 수 없습니다. %1번째 문자는 %2입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="75"/>
+        <source>serial number &quot;%1&quot; begins or ends with white space; a serial number is tested exactly as given</source>
+        <translation>시리얼 번호 &quot;%1&quot;의 앞이나 뒤에 공백이 있습니다. 시리얼 번호는 입력된 그대로 검사됩니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="85"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2</source>
+        <translation>시리얼 번호 &quot;%1&quot;이(가) 레시피의 시리얼 번호 패턴 %2과(와) 일치하지 않습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="87"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2 (e.g. %3)</source>
+        <translation>시리얼 번호 &quot;%1&quot;이(가) 레시피의 시리얼 번호 패턴 %2과(와) 일치하지 않습니다(예: %3)</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="104"/>
+        <source>&quot;serialPattern&quot; has %1 characters; at most %2 are allowed</source>
+        <translation>&quot;serialPattern&quot;은(는) %1자입니다. 최대 %2자까지 허용됩니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="108"/>
+        <source>&quot;serialPattern&quot; may not hold control characters, format characters or line breaks (no serial number holds one); character %1 is %2</source>
+        <translation>&quot;serialPattern&quot;에는 제어 문자, 서식 문자나 줄바꿈을 넣을 수 없습니다(시리얼 번호에는 없는 문자입니다). %1번째 문자는 %2입니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="115"/>
+        <source>&quot;serialPattern&quot; %1 is not a valid regular expression: %2 at character %3</source>
+        <translation>&quot;serialPattern&quot; %1은(는) 올바른 정규 표현식이 아닙니다: %3번째 문자에서 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="121"/>
+        <source>&quot;serialPattern&quot; %1 cannot be matched against a whole serial number</source>
+        <translation>&quot;serialPattern&quot; %1은(는) 시리얼 번호 전체와 대조할 수 없습니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="127"/>
+        <source>&quot;serialExample&quot; needs a &quot;serialPattern&quot; that it matches</source>
+        <translation>&quot;serialExample&quot;에는 그것과 일치하는 &quot;serialPattern&quot;이 필요합니다</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="130"/>
+        <source>&quot;serialExample&quot;: %1</source>
+        <translation>&quot;serialExample&quot;: %1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="140"/>
+        <source>any, at most %1 characters</source>
+        <translation>모두 허용, 최대 %1자</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="143"/>
+        <source>%1 (e.g. %2)</source>
+        <translation>%1(예: %2)</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="42"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>파라미터를 이름으로 쓰고, 검사하고, 다시 읽어 검증합니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="52"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>주소로 레지스터를 씁니다: ADDR=VALUE (반복 가능; --fc 16이면 VALUE,VALUE...).</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 쓰기의 기능 코드: 6(기본값) 또는 16.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="63"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>오류: 사용법: set ID NAME=VALUE... (예: set 1 spno2.accel=2.5) 또는 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="75"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>오류: &quot;%1&quot;은(는) NAME=VALUE 형식이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="82"/>
-        <location filename="../cli/SetCommand.cpp" line="91"/>
-        <location filename="../cli/SetCommand.cpp" line="106"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="92"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
-        <location filename="../cli/SetCommand.cpp" line="114"/>
+        <location filename="../cli/SetCommand.cpp" line="105"/>
+        <location filename="../cli/SetCommand.cpp" line="117"/>
         <source>warning: %1</source>
         <translation>경고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>모터를 움직이거나 리셋, 삭제, 초기화, 저장하는 명령과 시리얼 설정 잠금의 설정을 확인합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="146"/>
+        <location filename="../cli/SetCommand.cpp" line="149"/>
         <source>next: %1</source>
         <translation>다음: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>다음: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (공장 출하 통신 설정)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Parameter</source>
         <translation>파라미터</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Value</source>
         <translation>값</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Result</source>
         <translation>결과</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="199"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written, verified</source>
         <translation>쓰기 완료, 검증됨</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="201"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>written, not verified: %1</source>
         <translation>쓰기 완료, 확인 안 됨: %1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="202"/>
+        <location filename="../cli/SetCommand.cpp" line="205"/>
         <source>written (command, not readable)</source>
         <translation>쓰기 완료(명령, 읽기 불가)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="204"/>
+        <location filename="../cli/SetCommand.cpp" line="207"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>확인 안 됨(%1): 드라이버에 값이 들어갔는지 알 수 없습니다. &quot;get&quot;으로 다시 읽으십시오</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="215"/>
+        <location filename="../cli/SetCommand.cpp" line="218"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="222"/>
+        <location filename="../cli/SetCommand.cpp" line="225"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>참고: 드라이버는 다음 전원 투입부터 %1을(를) 사용합니다: 드라이버 전원을 껐다 켠 뒤 새 설정(--baud, --parity)으로 연결하십시오</translation>
     </message>
@@ -14416,17 +14573,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="176"/>
+        <location filename="../sim/SimApp.cpp" line="177"/>
         <source>the port is unplugged already</source>
         <translation>포트가 이미 분리되어 있습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="178"/>
+        <location filename="../sim/SimApp.cpp" line="179"/>
         <source>unplugged</source>
         <translation>분리됨</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="211"/>
+        <location filename="../sim/SimApp.cpp" line="212"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -15280,64 +15437,64 @@ stdin에서 읽습니다(help 입력). SIGINT, SIGTERM 또는 quit으로 종료�
 <context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="22"/>
+        <location filename="../ui/eol/StationActions.cpp" line="24"/>
         <source>Reset alarm and test again</source>
         <translation>알람 리셋 후 다시 검사</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="23"/>
+        <location filename="../ui/eol/StationActions.cpp" line="25"/>
         <source>Technician: test again…</source>
         <translation>기술자: 다시 검사…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <location filename="../ui/eol/StationActions.cpp" line="50"/>
         <source>A technician may allow unit %1 to be tested again.</source>
         <translation>기술자가 유닛 %1의 재시험을 허가할 수 있습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="54"/>
+        <location filename="../ui/eol/StationActions.cpp" line="57"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>국번 %1의 알람을 리셋하는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="63"/>
+        <location filename="../ui/eol/StationActions.cpp" line="66"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>알람이 해제되지 않았습니다. 아무것도 시작하지 않았습니다:
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="73"/>
+        <location filename="../ui/eol/StationActions.cpp" line="76"/>
         <source>reset the alarm</source>
         <translation>알람 리셋</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="79"/>
+        <location filename="../ui/eol/StationActions.cpp" line="82"/>
         <source>serial %1</source>
         <translation>시리얼 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="88"/>
+        <location filename="../ui/eol/StationActions.cpp" line="91"/>
         <source>test serial %1 again</source>
         <translation>시리얼 %1 재시험</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="102"/>
+        <location filename="../ui/eol/StationActions.cpp" line="105"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>검사 전에 국번 %1에 알람이 발생해 있었습니다. 아무것도 쓰지 않았습니다. 알람을 리셋하면(드라이버 자체의 리셋 사용, 전원 재투입이 필요한 알람은 따로 표시됨) 제품을 다시 검사합니다.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="131"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>(no name)</source>
         <translation>(이름 없음)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="136"/>
         <source>Test again</source>
         <translation>다시 검사</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="134"/>
+        <location filename="../ui/eol/StationActions.cpp" line="137"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -15372,22 +15529,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationFigures</name>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="25"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="27"/>
         <source>This shift: no figures yet (%1)</source>
         <translation>이번 근무조: 아직 집계 없음 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="26"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="28"/>
         <source>results database not read</source>
         <translation>결과 데이터베이스를 아직 읽지 않음</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="29"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="31"/>
         <source>This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5</source>
         <translation>이번 근무조: 검사 %1 · 합격 %2 · 불합격 %3 · 스테이션 오류 %4 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="35"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="39"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>이 스테이션, 이 레시피 버전, %1 이후 (%2에 읽음). 같은 수치를 보는 명령: %3</translation>
     </message>
@@ -15395,52 +15552,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
         <source>Operator:</source>
         <translation>작업자:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>user name</source>
         <translation>사용자 이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
         <source>password</source>
         <translation>비밀번호</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
         <source>Log in</source>
         <translation>로그인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
         <source>Log in:</source>
         <translation>로그인:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
         <source>Log out</source>
         <translation>로그아웃</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
         <source>Not logged in: %1</source>
         <translation>로그인하지 못했습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>로그인: &lt;b&gt;%1&lt;/b&gt;(%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>사용자가 설정되지 않았습니다: 누구나 실행, 편집, 종료할 수 있습니다. opentop-cli eol user add로 사용자를 설정하십시오</translation>
     </message>
@@ -15448,24 +15605,24 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationNotice</name>
     <message numerus="yes">
-        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="31"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>이 스테이션에 결과 %n건이 보관되어 있으며 아직 결과 데이터베이스에 없습니다: %1. 데이터베이스가 응답하면 순서대로 자동 전송됩니다.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="35"/>
         <source>it does not answer</source>
         <translation>데이터베이스가 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="38"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>유닛 %1(%2 시작)이 완료되지 않았습니다: 검사 중에 스테이션이 멈췄습니다. &apos;중단됨&apos;으로 기록되었으니 다시 검사하십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="44"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>레시피의 드라이브를 안전 상태로 만드는 중: 하나씩 읽고, 운전 중인 것을 정지하고, 제어를 입력 단자로 되돌립니다…</translation>
     </message>
@@ -15965,7 +16122,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="36"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>%1:%2에서 수신 대기할 수 없습니다: %3</translation>
     </message>
@@ -16026,7 +16183,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>&lt;b&gt;국번 %1 시운전&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="53"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="54"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>국번 %1이(가) 알려진 제품군의 드라이버로 식별되지 않았습니다. 시운전에는 식별이 필요합니다.</translation>
     </message>
@@ -16076,42 +16233,42 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>운전, 정지, 방향, 속도 선택을 드라이버의 입력 단자로 되돌립니다</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="160"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="161"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>드라이버가 운전 명령을 받는지 확인하기 위해 %1을(를) 읽을 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="196"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="197"/>
         <source>Not started: the variant of %1 was not given.</source>
         <translation>시작하지 않았습니다: %1의 기종이 지정되지 않았습니다.</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="203"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="204"/>
         <source>Reading what the start will run…</source>
         <translation>기동 시 운전할 내용을 읽는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="219"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="220"/>
         <source>Start the motor</source>
         <translation>모터 기동</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="233"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="234"/>
         <source>Sending %1…</source>
         <translation>%1 보내는 중…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="262"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="263"/>
         <source>Not every drive of its communication group runs: see below.</source>
         <translation>통신 그룹의 모든 드라이버가 운전 중인 것은 아닙니다: 아래를 보십시오.</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="280"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="281"/>
         <source>Sent: %1</source>
         <translation>보냄: %1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="349"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="350"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>폴링이 일시 정지되었습니다: 컨트롤러는 마지막 프레임을 받은 뒤 %1 s가 지나면 모터에 브레이크를 겁니다(%2). 모터를 계속 운전하려면 폴링을 재개하십시오.</translation>
     </message>
@@ -16196,7 +16353,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Pause</source>
         <translation>일시 정지(&amp;P)</translation>
     </message>
@@ -16251,17 +16408,17 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>프레임</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Drive</source>
         <translation>드라이버</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Requests</source>
         <translation>요청</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Replies</source>
         <translation>응답</translation>
     </message>
@@ -16276,7 +16433,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 오류</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Exceptions</source>
         <translation>예외</translation>
     </message>
@@ -16292,6 +16449,11 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
+        <source>Late replies</source>
+        <translation>지연 응답</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>최대 ms</translation>
     </message>
@@ -16301,44 +16463,49 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>드라이버별 통계</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="119"/>
+        <source>Frames that answered nothing asked at the time: a reply to an earlier request that came too late, discarded and never taken as a value</source>
+        <translation>당시 요청에 대한 응답이 아닌 프레임입니다. 이전 요청에 대한 응답이 늦게 도착한 것으로, 폐기되며 값으로 사용되지 않습니다.</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Resume</source>
         <translation>재개(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="320"/>
         <source>Broadcast</source>
         <translation>브로드캐스트</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
         <source>Drive %1</source>
         <translation>드라이버 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="309"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>응답하지 않은 주소 %1개: %2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="311"/>
         <source>No reply from machine numbers %1</source>
         <translation>응답 없는 국번: %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="357"/>
         <source>Save traffic log</source>
         <translation>통신 로그 저장</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
         <source>Text files (*.txt)</source>
         <translation>텍스트 파일 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="358"/>
         <source>Could not save %1: %2</source>
         <translation>%1을(를) 저장할 수 없습니다: %2</translation>
     </message>
@@ -16461,51 +16628,56 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%1을(를) 열 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1이(가) 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
         <source>send failed</source>
         <translation>송신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>다른 응답이 이어졌습니다: 이 응답은 이전 요청에 대한 것일 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>드라이브 자체 통신 형식에는 시리얼 포트가 필요합니다. Modbus TCP 게이트웨이는 라인을 스스로 설정합니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>라인을 %1(으)로 전환할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
+        <translation>%1 ms 이내에 응답 없음 (이전 요청에 대한 지연 응답은 폐기함)</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>슬레이브 %1의 응답, 기대값 %2</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="158"/>
+        <location filename="../transport/RtuBackend.cpp" line="178"/>
         <location filename="../transport/TcpBackend.cpp" line="107"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
@@ -16517,24 +16689,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 불일치</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
-        <location filename="../transport/RtuBackend.cpp" line="165"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
+        <translation>지연 응답 폐기: 요청 후 %1 ms에 수신 완료. 응답은 선로에서 최소 %2 ms가 걸립니다</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
         <source> (connection closed)</source>
         <translation> (연결 끊김)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
         <source>stale bytes discarded before sending</source>
         <translation>송신 전 남아 있던 바이트 버림</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
         <source>late bytes discarded after an error</source>
         <translation>오류 후 늦게 온 바이트 버림</translation>
     </message>
@@ -16815,7 +16992,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%2(PID %3)이(가) %1을(를) 사용 중입니다. 먼저 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="95"/>
+        <location filename="../transport/RtuBackend.cpp" line="115"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -16824,17 +17001,17 @@ then log out and in again (the group applies to new sessions only).</source>
 로그아웃했다가 다시 로그인하십시오(그룹은 새 세션에만 적용됨).</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="101"/>
+        <location filename="../transport/RtuBackend.cpp" line="121"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (장치가 이 패리티를 지원하지 않을 수 있습니다. pty는 N이 필요합니다)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="136"/>
+        <location filename="../transport/RtuBackend.cpp" line="156"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>응답이 %1바이트라고 알리지만 RTU 프레임에 들어갈 수 있는 크기보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="157"/>
+        <location filename="../transport/RtuBackend.cpp" line="177"/>
         <source>no reply</source>
         <translation>응답 없음</translation>
     </message>
@@ -17115,12 +17292,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>time</source>
         <translation>시간</translation>
     </message>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>seconds</source>
         <translation>초</translation>
     </message>
@@ -17290,278 +17467,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="81"/>
+        <location filename="../cli/TuneCommand.cpp" line="82"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>DC 컨트롤러의 속도 루프 스텝 시험과 릴레이 오토튜닝 (--yes 필요)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>Run the test (it moves the motor).</source>
         <translation>시험을 실행합니다(모터가 움직입니다).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step: 스텝 전 속도 (기본값 0).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <location filename="../cli/TuneCommand.cpp" line="89"/>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: speed after the step.</source>
         <translation>step: 스텝 후 속도.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step: 스텝 후 기록할 시간 (기본값 1500).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune: 릴레이 시험의 운전 속도.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune: 출력 스윙, 최대 출력에 대한 % (기본값 10).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="94"/>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune: soft, medium (기본값), stiff, tyreus-luyben 또는 zn-pi.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="97"/>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune: 제안된 게인을 쓴 뒤, 운전 속도의 절반에서 운전 속도까지 스텝 시험을 실행합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
         <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
         <translation>autotune: --accept와 함께 쓰면, 그 게인으로 측정한 스텝이 확인을 통과할 때 게인을 드라이버에 저장합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="104"/>
         <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
         <translation>autotune: --accept와 함께 쓰면 측정한 스텝이 확인을 통과하지 못해도 게인을 유지합니다(--store가 있으면 저장). 지정하지 않으면 드라이버의 이전 게인을 다시 씁니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>속도가 이 값을 넘으면 즉시 정지합니다(기본값: 시험 최고 속도의 120 %).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="107"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>전류가 이 값(A)을 넘으면 즉시 정지합니다(기본값 20).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="108"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>Write the samples to FILE.</source>
         <translation>샘플을 FILE에 씁니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="123"/>
+        <location filename="../cli/TuneCommand.cpp" line="124"/>
         <source>error: usage: %1</source>
         <translation>오류: 사용법: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="133"/>
+        <location filename="../cli/TuneCommand.cpp" line="134"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>오류: --%1은(는) 0 이상의 숫자여야 합니다. 입력값: &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="155"/>
-        <location filename="../cli/TuneCommand.cpp" line="166"/>
-        <location filename="../cli/TuneCommand.cpp" line="171"/>
-        <location filename="../cli/TuneCommand.cpp" line="374"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="167"/>
+        <location filename="../cli/TuneCommand.cpp" line="172"/>
+        <location filename="../cli/TuneCommand.cpp" line="375"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>step needs --to SPEED</source>
         <translation>step에는 --to SPEED가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="157"/>
+        <location filename="../cli/TuneCommand.cpp" line="158"/>
         <source>--rule must be one of %1</source>
         <translation>--rule은 %1 중 하나여야 합니다</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="159"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune에는 --speed SPEED가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="175"/>
+        <location filename="../cli/TuneCommand.cpp" line="176"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>국번 %1의 모터를 %2에서 %3(으)로 운전하고 스텝 응답을 기록합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="181"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>국번 %1의 모터를 %2 부근에서 릴레이 시험으로 운전합니다(출력 ±%3 %).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="186"/>
+        <location filename="../cli/TuneCommand.cpp" line="187"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>모터가 움직입니다: 실행하려면 --yes를 추가하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="236"/>
         <source>Machine number %1, gains %2</source>
         <translation>국번 %1, 게인 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="237"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  상승 시간 (10–90 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="238"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  overshoot: %1 %</source>
         <translation>  오버슈트: %1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="239"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  settling time (2 %): %1</source>
         <translation>  정정 시간 (2 %): %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="240"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  정상상태 오차: %1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="241"/>
+        <location filename="../cli/TuneCommand.cpp" line="242"/>
         <source>  peak current: %1 A</source>
         <translation>  피크 전류: %1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="267"/>
+        <location filename="../cli/TuneCommand.cpp" line="268"/>
         <source>Step %1 → %2 %3:</source>
         <translation>스텝 %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <location filename="../cli/TuneCommand.cpp" line="273"/>
         <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
         <translation>릴레이 시험: Ku %1, 측정된 Tu %2 ms (진폭 ±%3 %4, %5주기, 주기당 읽기 %6회, %7 ms마다)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <location filename="../cli/TuneCommand.cpp" line="365"/>
         <source>What to change: %1</source>
         <translation>바꿀 점: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="282"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>모델: 게인 %1, 시정수 %2 ms, 무효 시간 %3 ms (버스의 %4 ms는 제외)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="288"/>
         <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
         <translation>모델상 드라이버 자체 루프: Ku %1, Tu %2 ms</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="290"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
         <source>Proposed (%1): %2</source>
         <translation>제안값 (%1): %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <location filename="../cli/TuneCommand.cpp" line="292"/>
         <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
         <translation>  규칙의 P × %1, Ti × %2; 예측 스텝 %3 → %4 %5: 오버슈트 %6 %, 정정 시간 %7</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="307"/>
+        <location filename="../cli/TuneCommand.cpp" line="308"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>제안 게인 쓰기 실패: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="310"/>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
         <source>Proposed gains written (not stored).</source>
         <translation>제안 게인을 썼습니다(저장 안 됨).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="313"/>
+        <location filename="../cli/TuneCommand.cpp" line="314"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>이 게인으로 측정한 스텝 %1 → %2 %3:</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <location filename="../cli/TuneCommand.cpp" line="322"/>
         <source>interrupted</source>
         <translation>중단됨</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
         <source>Check after Accept: passed. %1</source>
         <translation>수락 후 확인: 통과. %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <location filename="../cli/TuneCommand.cpp" line="326"/>
         <source>Check after Accept: FAILED. %1</source>
         <translation>수락 후 확인: 실패. %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <location filename="../cli/TuneCommand.cpp" line="335"/>
         <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
         <translation>이전 게인을 다시 썼습니다(%1). 아무것도 저장하지 않았습니다. --override-check를 주면 그래도 제안값을 유지합니다(--store가 있으면 저장).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <location filename="../cli/TuneCommand.cpp" line="339"/>
         <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
         <translation>이전 게인 다시 쓰기 실패: %1. 제안값이 아직 드라이버에 있습니다(저장 안 됨).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <location filename="../cli/TuneCommand.cpp" line="346"/>
         <source>Storing although the check failed (--override-check).</source>
         <translation>확인을 통과하지 못했지만 저장합니다(--override-check).</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="354"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Gains stored in the drive.</source>
         <translation>게인을 드라이버에 저장했습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="355"/>
+        <location filename="../cli/TuneCommand.cpp" line="356"/>
         <source>Storing the gains failed: %1</source>
         <translation>게인 저장 실패: %1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="362"/>
+        <location filename="../cli/TuneCommand.cpp" line="363"/>
         <source>Test ended: %1</source>
         <translation>시험 종료: %1</translation>
     </message>
@@ -18127,32 +18304,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitLog</name>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Time</source>
         <translation>시각</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Serial</source>
         <translation>시리얼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Verdict</source>
         <translation>판정</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Reason</source>
         <translation>원인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1, 기록 안 됨</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="34"/>
         <source>%1 (kept on this station)</source>
         <translation>%1 (이 스테이션에 보관)</translation>
     </message>
@@ -18211,97 +18388,97 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="71"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="74"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 파일이 %1 MB보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="73"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="76"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>CSV 텍스트 파일이 아닙니다(NUL 바이트 포함)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="94"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>%1행: 따옴표로 묶은 필드가 올바르게 닫히지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="98"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>%1행: 헤더는 &quot;%2&quot;이(가) 아니라 &quot;serial&quot;로 시작해야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="102"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="105"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>%1행: 헤더에 제품별 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="104"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: more than %2 columns</source>
         <translation>%1행: 열이 %2개보다 많습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="108"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="111"/>
         <source>line %1: column %2 has no name</source>
         <translation>%1행: 열 %2에 이름이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="110"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="113"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>%1행: 열 &quot;%2&quot;이(가) 두 번 나옵니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="119"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="122"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>%1행: 필드가 %2개이지만 헤더는 %3개입니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="125"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="128"/>
         <source>line %1: no serial number</source>
         <translation>%1행: 시리얼 번호 없음</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="127"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="130"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>%1행: 시리얼 번호 &quot;%2&quot;이(가) 이미 %3행에 있습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="134"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="137"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 파일이 비어 있습니다. &quot;serial,&lt;parameter&gt;,...&quot; 헤더가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="148"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="151"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="189"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="193"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>시리얼 번호 &quot;%1&quot;이(가) CSV 파일에 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="202"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1: 열 &quot;%2&quot;이(가) 모호합니다. 여러 위치에 이 제품별 값이 있습니다. 열 이름을 &quot;%3:%2&quot;(으)로 하십시오</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="210"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1: CSV 파일에 이 제품별 값의 열 &quot;%2&quot;(또는 &quot;%3:%2&quot;)이(가) 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="211"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="215"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>%1행, 열 &quot;%2&quot;: 시리얼 번호 &quot;%3&quot;의 값이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="220"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>%1행, 열 &quot;%2&quot;: &quot;%3&quot;은(는) 숫자가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="231"/>
         <source>line %1: %2</source>
         <translation>%1행: %2</translation>
     </message>
@@ -18663,12 +18840,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>어떤 드라이버입니까?</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="41"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="42"/>
         <source>Not known: check against every variant</source>
         <translation>모름: 모든 기종 기준으로 검사</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="65"/>
         <source>the variant of %1 was not given</source>
         <translation>%1의 기종이 지정되지 않았습니다</translation>
     </message>

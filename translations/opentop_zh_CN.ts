@@ -86,107 +86,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="70"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="71"/>
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="90"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="92"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="93"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="95"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="96"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="98"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="99"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="105"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="106"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：无法读取：%2</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="109"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="110"/>
         <source>%1: no records.</source>
         <translation>%1：无记录。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="112"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="113"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：%3 条记录中的 %2 条，最新在前</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="124"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="125"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="131"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="133"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>Remedy: %1</source>
         <translation>处理方法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="135"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="136"/>
         <source>To clear: %1</source>
         <translation>清除方法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="141"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="142"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通信错误寄存器（%1）：无法读取。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="145"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="146"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通信错误寄存器（%1）：无（0）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="148"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="149"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通信错误寄存器（%1）：%2，不是已知代码。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="152"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="153"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -195,57 +195,57 @@
   处理方法：%5</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>在标准输出上输出机器可读的 JSON。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="28"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>在标准错误上输出每一帧收发报文。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="30"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>驱动器未报告机型时指定机型：VARIANT，或 ID=VARIANT,…（例如 dbu400, 150=dbu400）。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="32"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="34"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>总线上的驱动器，例如 1,3,5-7（默认：OPENTOP_BUS_DRIVES，否则为此连接上次扫描找到的驱动器）：写入或执行命令前读取其通信组，以列出命令同时到达的每台驱动器。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="37"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
         <translation>即使不知道总线上有哪些驱动器（没有 --bus-drives，此连接也未扫描过），仍向可能是通信组主站的驱动器写入或执行命令：组内的驱动器也会执行，且不会列出。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="42"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>显示本帮助；放在命令之后则显示该命令的帮助。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="44"/>
         <source>Show the version.</source>
         <translation>显示版本。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="47"/>
+        <location filename="../cli/CliApp.cpp" line="48"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>供人阅读的输出的语言：en、zh_TW、zh_CN、ko、ja（默认：系统语言）。--json 输出在各语言中都相同。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="49"/>
+        <location filename="../cli/CliApp.cpp" line="50"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -410,19 +410,29 @@
         <translation> 及另外 %1 个</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="27"/>
+        <location filename="../cli/TuneCommand.cpp" line="28"/>
         <source>not reached</source>
         <translation>未达到</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <location filename="../cli/SetCommand.cpp" line="36"/>
         <source>nothing was written</source>
         <translation>未写入任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="60"/>
+        <source>NOT RECORDED (%1)</source>
+        <translation>未记录（%1）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="62"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（保存在本工作站）</translation>
     </message>
 </context>
 <context>
@@ -689,89 +699,89 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Kind</source>
         <translation>类型</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Code</source>
         <translation>代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine name</source>
         <translation>机器名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Panel code</source>
         <translation>面板代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cleared by</source>
         <translation>清除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Remedy</source>
         <translation>处理方法</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="54"/>
         <source>alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="55"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="63"/>
         <source>unknown code</source>
         <translation>未知代码</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="105"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="109"/>
         <source>machine %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/alarms/AlarmExport.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="132"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>已将 %1 台驱动器的 %n 条记录写入 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="133"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="137"/>
         <source>Not everything could be read: %1</source>
         <translation>部分内容无法读取：%1</translation>
     </message>
@@ -974,92 +984,92 @@ Remedy: %5</source>
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="164"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="165"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>显示报警和警告履历及原因与处理方法；复位、清除记录</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="171"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>发送报警复位命令，然后显示报警是否已清除或需要重新上电（需要 --yes；报警仍存在时退出码为 4）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>清除报警和警告记录（需要 --yes）。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="175"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>确认 --reset 和 --clear-records。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="185"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="186"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>错误：用法：%1（一个站号）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="193"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="194"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="199"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="200"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>错误：站号 %1（%2）不保存报警或警告记录</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="206"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>错误：%1 驱动器没有 %2 命令</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>alarm reset</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>record erase</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="219"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="220"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下操作将修改站号 %1；加上 --yes 才会发送：</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="223"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="224"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 若原因已排除且该报警并非只能重新上电清除，则清除当前报警</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="248"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="249"/>
         <source>Machine number %1 (%2)</source>
         <translation>站号 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="276"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="277"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="300"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="304"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="306"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="307"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -1087,153 +1097,153 @@ Remedy: %5</source>
         <translation>站号 %1（%2）的报警和警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="67"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>发送报警复位命令；显示报警是否已清除或只能重新上电清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="69"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驱动器保存的报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="75"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>该驱动器不保存报警或警告记录。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="105"/>
         <source>Alarm state: %1</source>
         <translation>报警状态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="187"/>
         <source>Reading the records…</source>
         <translation>正在读取记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="203"/>
         <source>No alarm is active.</source>
         <translation>当前无报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="205"/>
         <source>Alarm active: %1 %2.</source>
         <translation>报警中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="207"/>
         <source>An alarm is active.</source>
         <translation>有报警发生。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="210"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）：报警复位无法清除任何报警。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="214"/>
         <source>Could not be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Writes: %1</source>
         <translation>写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="253"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，将清除当前报警。部分报警只能通过重新上电清除；结果会给出提示。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>该驱动器设定为仅通过重新上电清除报警（%1）。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="260"/>
         <source>Reset alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="259"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>向站号 %1 发送报警复位命令？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>Sending the alarm reset…</source>
         <translation>正在发送报警复位…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm reset: %1</source>
         <translation>报警复位：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="276"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>请关闭驱动器电源，等待 5 s 后再接通。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>%1 (%2 records)</source>
         <translation>%1（%2 条记录）</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>the alarm and warning records</source>
         <translation>报警和警告记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>Clear records</source>
         <translation>清除记录</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source>Erase %1 of machine %2?</source>
         <translation>清除站号 %2 的%1？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source> and </source>
         <translation> 和 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>记录清除后无法恢复。写入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="295"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>Erasing the records…</source>
         <translation>正在清除记录…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1（%2 条记录）；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="313"/>
         <source>read back empty.</source>
         <translation>回读为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>NOT empty when read back.</source>
         <translation>回读时不为空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="316"/>
         <source>Erasing failed: %1</source>
         <translation>清除失败：%1</translation>
     </message>
@@ -1395,95 +1405,95 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="36"/>
+        <location filename="../cli/BackupCommand.cpp" line="37"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>将驱动器的全部设定保存到备份文件（仅在全部读取成功后写入）</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="42"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>要写入的备份文件（原子替换）。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="44"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="45"/>
+        <location filename="../cli/BackupCommand.cpp" line="46"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>连接已知的所有驱动器（模拟总线），或扫描找到的所有驱动器。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="53"/>
+        <location filename="../cli/BackupCommand.cpp" line="54"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>错误：请指定站号，或使用 --all：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="62"/>
-        <location filename="../cli/BackupCommand.cpp" line="243"/>
-        <location filename="../cli/BackupCommand.cpp" line="249"/>
+        <location filename="../cli/BackupCommand.cpp" line="63"/>
+        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="71"/>
+        <location filename="../cli/BackupCommand.cpp" line="72"/>
         <source>scanning the bus for drives…</source>
         <translation>正在扫描总线上的驱动器…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="86"/>
+        <location filename="../cli/BackupCommand.cpp" line="87"/>
         <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
         <translation>警告：站号 %1 有应答，但识别失败：未备份它；请指定这个站号再试一次（backup %1 -o FILE）。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="107"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>错误：读取 %2 时端口 %1 丢失（%3）</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
-        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="112"/>
+        <location filename="../cli/BackupCommand.cpp" line="247"/>
         <source>nothing written to %1</source>
         <translation>未写入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="118"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>错误：请指定要写入的文件：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="122"/>
+        <location filename="../cli/BackupCommand.cpp" line="124"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="134"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>interrupted: nothing written</source>
         <translation>已中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="138"/>
+        <location filename="../cli/BackupCommand.cpp" line="140"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>错误：%1 上没有驱动器应答；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="166"/>
         <source>machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="224"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>读取站号 %1 时中断：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="186"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1：%3 次请求读取 %2 项设定，%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="194"/>
+        <location filename="../cli/BackupCommand.cpp" line="196"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1：读取失败，已读取 %3 项设定中的 %2 项（%4 次请求，%5 ms）</translation>
     </message>
@@ -1531,44 +1541,44 @@ Remedy: %5</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="53"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="54"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>仅保存已读取的驱动器；其余的不保存</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="55"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="56"/>
         <source>Stop after the drive being read</source>
         <translation>读完当前驱动器后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="83"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="84"/>
         <source>Nothing was read: %1.</source>
         <translation>未读取任何数据：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="106"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="107"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="110"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驱动器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在读取 %n 台驱动器的设定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="122"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="123"/>
         <source>Stopping after the drive being read…</source>
         <translation>读完当前驱动器后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="161"/>
         <source>Not read (cancelled)</source>
         <translation>未读取（已取消）</translation>
     </message>
@@ -1578,58 +1588,58 @@ Remedy: %5</source>
         <translation>驱动器 %1：未识别，未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
         <source>Not identified</source>
         <translation>未识别</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="153"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%1 ms 内读取了 %n 项设定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>Value not allowed</source>
         <translation>值不允许</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="168"/>
         <source>Read failed</source>
         <translation>读取失败</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="183"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="184"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未读取：驱动器 %1。尚未保存任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="189"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>保存已读取的 %n 台驱动器？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="213"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="214"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 台驱动器保存到 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="219"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>未保存（未读取）：驱动器 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="223"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="224"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -1806,87 +1816,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="24"/>
         <source>Backup file</source>
         <translation>备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Label</source>
         <translation>标签</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Registers</source>
         <translation>寄存器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="39"/>
         <source>&amp;Open…</source>
         <translation>打开(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="40"/>
         <source>Open another backup file</source>
         <translation>打开另一个备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="41"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="68"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="69"/>
         <source>Backup file %1</source>
         <translation>备份文件 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="77"/>
         <source>Open backup file</source>
         <translation>打开备份文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="78"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="100"/>
         <source>File: %1</source>
         <translation>文件：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="101"/>
         <source>Refused: %1</source>
         <translation>已拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="116"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>，%1 bit/s，校验位 %2，停止位 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="118"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1897,17 +1907,17 @@ Drives: %5</source>
 驱动器：%5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2，固件 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="130"/>
         <source>(variant unknown)</source>
         <translation>（机型未知）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="133"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 项设定</numerusform>
@@ -2069,37 +2079,37 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListMenu</name>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="30"/>
         <source>&amp;Name this machine…</source>
         <translation>为此机器命名(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="35"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="36"/>
         <source>&amp;Identify again</source>
         <translation>重新识别(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="46"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="47"/>
         <source>&amp;Remove from list</source>
         <translation>从列表中移除(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="61"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="62"/>
         <source>Name of %1 (up to %2 characters; empty removes the name):</source>
         <translation>%1 的名称（最多 %2 个字符；留空即删除名称）：</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="67"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="69"/>
         <source>Name this machine</source>
         <translation>为此机器命名</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="74"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="76"/>
         <source>Machine number %1 has no name now.</source>
         <translation>站号 %1 现在没有名称。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="75"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="77"/>
         <source>Machine number %1 is now named %2.</source>
         <translation>站号 %1 现在名为 %2。</translation>
     </message>
@@ -2107,133 +2117,133 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="76"/>
         <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
         <translation>站号：驱动器在总线上的地址（1–247）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="78"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驱动器的 MONITOR 指示灯：红色报警，绿色就绪，橙色 CW，天蓝色 CCW，紫色外部中断，蓝色存储器或通信错误，灰色无应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>No.</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="98"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>控制优先级</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="73"/>
         <source>How each drive&apos;s machine number is set on its switches:
 %1</source>
         <translation>各驱动器的站号在其开关上的设定方式：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Switches</source>
         <translation>开关</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="100"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="101"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="112"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="113"/>
         <source>Two drives may share machine number %1 (%2): check the address switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有两台驱动器共用站号 %1（%2）：请检查线路上每台驱动器的地址开关，为每台驱动器设定各自的站号并重新上电；终端电阻不良或 A/B 接反也会使应答损坏。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <source>%1 at %2</source>
         <translation>%1，%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <location filename="../ui/bus/BusListModel.cpp" line="135"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="147"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="148"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 机型未知</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>状态灯 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="174"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="175"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>驱动器手册：%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="177"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
         <source>Status light grey: not live — %1</source>
         <translation>状态灯灰色：非实时 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
         <source>No name yet: Name… in the context menu (F2) names this machine</source>
         <translation>尚无名称：在右键菜单中选择“命名…”（F2）为此机器命名</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="187"/>
         <source>%1: the name given to this machine (F2 changes it)</source>
         <translation>%1：此机器的名称（F2 可更改）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="189"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="190"/>
         <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
         <translation>发往该驱动器的请求以它自己的通信格式 %1 发送，而不是端口的格式：线路在两次通信之间切换过去再切换回来。可在右键菜单的“通信格式…”中更改。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="196"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="197"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>该驱动器未报告其机型。请在右键菜单（机型）中选择，以便按正确的限值检查数值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="206"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>该驱动器通过 I/O 端子接收运行命令；通过总线试运行需要通信优先级。</translation>
     </message>
@@ -2257,67 +2267,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="133"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="135"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="137"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="139"/>
         <source>Display</source>
         <translation>显示</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="141"/>
         <source>Target</source>
         <translation>目标</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="143"/>
         <source>Load</source>
         <translation>负载</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="145"/>
         <source>Alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="147"/>
         <source>Last answer</source>
         <translation>最后应答</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="174"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="164"/>
         <source>connection lost; %1</source>
         <translation>连接丢失；%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="166"/>
         <source>no answer: %1; %2</source>
         <translation>无应答：%1；%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="203"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="206"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
@@ -2361,7 +2371,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusPanel.cpp" line="82"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="220"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="221"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
@@ -2376,47 +2386,47 @@ Drives: %5</source>
         <translation>在当前线路上的请求完成后停止扫描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="94"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="95"/>
         <source>Rescan at %1</source>
         <translation>以 %1 重新扫描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="134"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="135"/>
         <source>Drives on the bus</source>
         <translation>总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="150"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="151"/>
         <source>Name this machine…</source>
         <translation>为此机器命名…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="206"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="207"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m（站号 %1）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="210"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="211"/>
         <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
         <translation>站号 %1 有应答，但识别失败：正在重试（第 %2 次，共 %3 次）… 轮询将等到扫描结束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="222"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="223"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
         <translation>正在扫描 %3 上的站号 %1–%2，每个 %4 ms… 轮询将等到扫描结束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="294"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="295"/>
         <source>If one is on this bus, add it with Add drive and its line format.</source>
         <translation>如果总线上有这种驱动器，请用“添加驱动器”连同它的通信格式添加。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="299"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
         <translation>站号 %1 有应答，但识别失败，重新询问也一样：请用“添加驱动器…”手动添加，或检查它的通信设定后重新扫描。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="243"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>正在等待线路上的请求完成后取消…</translation>
     </message>
@@ -2428,41 +2438,41 @@ Drives: %5</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="260"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="261"/>
         <source>Did not answer the last scan.</source>
         <translation>上次扫描未应答。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="266"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>扫描在站号 %1 处停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>在站号 %1–%2 后取消扫描（%4 个中的 %3 个）：找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="279"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="280"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在 %3 s 内于站号 %1–%2 上找到 %n 台驱动器。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="320"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="321"/>
         <source>Asking machine number %1…</source>
         <translation>正在询问站号 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="325"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="326"/>
         <source>Machine number %1: %2 added.</source>
         <translation>站号 %1：已添加 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="327"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="328"/>
         <source>Machine number %1: %2 %3</source>
         <translation>站号 %1：%2 %3</translation>
     </message>
@@ -2480,27 +2490,27 @@ Drives: %5</source>
         <translation>扫描总线(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="43"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>Last time on %1: %2.</source>
         <translation>上次在 %1 上：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>恢复上次识别到的驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>恢复上次识别到的 %1 台驱动器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>按上次设定的机型，重新识别这些站号上的驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="61"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="62"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 上尚无已知的驱动器。请扫描总线查找驱动器。</translation>
     </message>
@@ -2587,312 +2597,312 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
         <source>STATION ERROR</source>
         <translation>工位错误</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="56"/>
         <source>INTERRUPTED</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="58"/>
         <source>NOT FINISHED</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="67"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="71"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="74"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>End-of-line test certificate</source>
         <translation>下线检测检验证书</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Serial number</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>%1, revision %2</source>
         <translation>%1，版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Recipe checksum</source>
         <translation>配方校验和</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Recipe approved by</source>
         <translation>配方批准人</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
         <source>not approved (station without users)</source>
         <translation>未批准（工位无用户）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (approval %2)</source>
         <translation>%1（批准 %2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>Station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Attempt</source>
         <translation>测试次数</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>第 %1 次（该序列号在此配方下的测试）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>未计次（记录时尚未统计测试次数）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="92"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="93"/>
         <source>Ended</source>
         <translation>结束时间</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Record</source>
         <translation>记录</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="103"/>
         <source>First failure:</source>
         <translation>首个不合格项：</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>该序列号此前有 %n 次测试不合格，列于下方。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="124"/>
         <source>Drives</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Variant</source>
         <translation>机型</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>How known</source>
         <translation>如何得知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Settings</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Read back</source>
         <translation>回读</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Verified</source>
         <translation>已校验</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>already set</source>
         <translation>已是该值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>Measurements</source>
         <translation>测量值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Quantity</source>
         <translation>测量项</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>Earlier tests of this serial</source>
         <translation>该序列号此前的测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="151"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="161"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前后的总线报文</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>read from the drive</source>
         <translation>从驱动器读取</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>proven by the variant probe</source>
         <translation>由机型探测证实</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="180"/>
         <source>confirmed by a person</source>
         <translation>由人员确认</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
         <source>ASSUMED, not proven</source>
         <translation>推定，未证实</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="186"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="192"/>
         <source>not known</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="194"/>
         <source>%1 (assumed)</source>
         <translation>%1（推定）</translation>
     </message>
@@ -2900,12 +2910,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="26"/>
         <source>End-of-line certificate %1</source>
         <translation>下线检测证书 %1</translation>
     </message>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="54"/>
+        <location filename="../report/CertificatePdf.cpp" line="57"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · 第 %3 页，共 %4 页</translation>
     </message>
@@ -2913,7 +2923,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="73"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2928,7 +2938,7 @@ RS-485 Modbus-RTU 电机驱动器调试工具。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="78"/>
+        <location filename="../cli/CliApp.cpp" line="79"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2974,23 +2984,23 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="124"/>
+        <location filename="../cli/CliApp.cpp" line="125"/>
         <source>note: standard output could not be written (closed early, or the disk is full): what the command printed there is lost; the work itself ran to its end and exit status %1 says how it ended</source>
         <translation>注意：无法写入标准输出（提前关闭或磁盘已满）：命令在该处输出的内容已丢失；工作本身已执行完毕，退出状态 %1 表示其结果</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
-        <location filename="../cli/CliApp.cpp" line="242"/>
+        <location filename="../cli/CliApp.cpp" line="190"/>
+        <location filename="../cli/CliApp.cpp" line="245"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>请尝试 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="208"/>
+        <location filename="../cli/CliApp.cpp" line="210"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知命令 &quot;%2&quot;；可用命令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="216"/>
+        <location filename="../cli/CliApp.cpp" line="219"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2999,12 +3009,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="230"/>
+        <location filename="../cli/CliApp.cpp" line="233"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是该命令的选项；请参阅 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="241"/>
+        <location filename="../cli/CliApp.cpp" line="244"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3012,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="96"/>
-        <location filename="../cli/CliContext.cpp" line="110"/>
-        <location filename="../cli/CliContext.cpp" line="118"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="111"/>
+        <location filename="../cli/CliContext.cpp" line="119"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="123"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>serial line: %1</source>
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="146"/>
+        <location filename="../cli/CliContext.cpp" line="147"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="258"/>
+        <location filename="../cli/CliContext.cpp" line="259"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="263"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="321"/>
+        <location filename="../cli/CliContext.cpp" line="322"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="325"/>
+        <location filename="../cli/CliContext.cpp" line="326"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="343"/>
+        <location filename="../cli/CliContext.cpp" line="344"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="353"/>
+        <location filename="../cli/CliContext.cpp" line="354"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -3146,32 +3156,32 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CommandReadBack</name>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="43"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 发送命令后回读：</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is running.</source>
         <translation>电机正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is stopped.</source>
         <translation>电机已停止。</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="48"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="50"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="57"/>
         <source>The drives of its communication group, read after the command:</source>
         <translation>命令后读取的通信组驱动器：</translation>
     </message>
@@ -3179,95 +3189,95 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="35"/>
+        <location filename="../cli/CompareCommand.cpp" line="36"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>显示不同的设定；A、B：站号、FILE 或 FILE:ID（无论是否有差异，退出码均为 0）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="42"/>
+        <location filename="../cli/CompareCommand.cpp" line="43"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>将 A 与设备描述中的出厂默认值比较；手册未给出默认值的设定会列出，但不计为差异。</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="69"/>
-        <location filename="../cli/CompareCommand.cpp" line="86"/>
-        <location filename="../cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="70"/>
+        <location filename="../cli/CompareCommand.cpp" line="87"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="63"/>
+        <location filename="../cli/CompareCommand.cpp" line="64"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="73"/>
+        <location filename="../cli/CompareCommand.cpp" line="74"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="105"/>
+        <location filename="../cli/CompareCommand.cpp" line="106"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>错误：%1 包含多台驱动器（%2）：请用 %1:ID 指定其中一台</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="108"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>错误：%1 中没有站号为 %2 的驱动器；其中有 %3</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="124"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>错误：compare A B 或 compare A --defaults（A、B：站号、FILE 或 FILE:ID）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="142"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="169"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>A: %1 (%2)</source>
         <translation>A：%1（%2）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="170"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
-        <location filename="../cli/CompareCommand.cpp" line="176"/>
+        <location filename="../cli/CompareCommand.cpp" line="182"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="179"/>
+        <location filename="../cli/CompareCommand.cpp" line="186"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="188"/>
         <source>no differences (%1 settings compared)</source>
         <translation>无差异（共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="188"/>
+        <location filename="../cli/CompareCommand.cpp" line="195"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
@@ -3301,13 +3311,13 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
@@ -3332,105 +3342,105 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>读取所选两侧并进行比较（驱动器会重新读取）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="75"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="78"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="108"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="111"/>
         <source>%1 refused: %2</source>
         <translation>%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="122"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="125"/>
         <source>Reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side A</source>
         <translation>A 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side B</source>
         <translation>B 侧</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="151"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>Factory defaults</source>
         <translation>出厂默认值</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="158"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="161"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>请为%1选择一个备份文件及其中的一台驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="165"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="175"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>请为%1选择总线上一台已识别的驱动器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="180"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="183"/>
         <source>%1: cannot read %2</source>
         <translation>%1：无法读取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="205"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="208"/>
         <source>Unknown family %1</source>
         <translation>未知系列 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>A: %1</source>
         <translation>A：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="225"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>factory defaults (%1)</source>
         <translation>出厂默认值（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="236"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
         <source>(no documented default)</source>
         <translation>（无文档默认值）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="237"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="240"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="242"/>
         <source>(not held)</source>
         <translation>（无此项）</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="255"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 处差异</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
         <source> in %1 settings compared</source>
         <translation> （共比较 %1 项设定）</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="262"/>
         <source>Note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="266"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="269"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>无文档出厂默认值（不计为差异）：%1</translation>
     </message>
@@ -4790,42 +4800,42 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveName</name>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="18"/>
+        <location filename="../model/bus/DriveName.cpp" line="19"/>
         <source>A machine&apos;s name has at most %1 characters; &quot;%2&quot; has %3.</source>
         <translation>机器名称最多 %1 个字符；“%2”有 %3 个。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="29"/>
+        <location filename="../model/bus/DriveName.cpp" line="30"/>
         <source>A machine&apos;s name may not hold control characters or line breaks (U+%1).</source>
         <translation>机器名称不能包含控制字符或换行（U+%1）。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="37"/>
+        <location filename="../model/bus/DriveName.cpp" line="38"/>
         <source>A machine&apos;s name may not hold %1 (a percent sign directly before a digit).</source>
         <translation>机器名称不能包含 %1（百分号后面紧跟数字）。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="44"/>
+        <location filename="../model/bus/DriveName.cpp" line="47"/>
         <source>machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="45"/>
+        <location filename="../model/bus/DriveName.cpp" line="48"/>
         <source>machine number %1 (%2)</source>
         <translation>站号 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="50"/>
+        <location filename="../model/bus/DriveName.cpp" line="53"/>
         <source>Machine number %1</source>
         <translation>站号 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="51"/>
+        <location filename="../model/bus/DriveName.cpp" line="54"/>
         <source>Machine number %1 (%2)</source>
         <translation>站号 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="68"/>
+        <location filename="../model/bus/DriveName.cpp" line="72"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
@@ -4980,7 +4990,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="167"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="169"/>
         <source>Write &amp;all pending</source>
         <translation>写入全部待写入项(&amp;A)</translation>
     </message>
@@ -4995,66 +5005,66 @@ Configuration changes written but not stored are discarded.</source>
         <translation>全部重新读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="53"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="55"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>写入该驱动器所有页面上的全部待写入修改，并进行校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="86"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="88"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>在总线列表中选择一台驱动器进行设定。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
         <translation>
             <numerusform>所有编辑值现已接受。尚未写入任何值：“写入全部待写入值”将发送 %n 个值。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>写入全部待写入项(&amp;A)（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="188"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>Reading the drive…</source>
         <translation>正在读取驱动器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 个值无法读取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="145"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="208"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="147"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="210"/>
         <source>Nothing was written: %1</source>
         <translation>未写入任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="142"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="222"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="144"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="224"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="231"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>向站号 %1 写入 %n 个待写入值</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="203"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="205"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="235"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="236"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="238"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在写入 %n 个值…</numerusform>
@@ -5064,88 +5074,88 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolAuditCommand</name>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="34"/>
         <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
         <translation>显示审计记录：谁登录、批准、使用或被拒绝某项权限</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
         <translation>audit：T 当时或之后（2026-11-24、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
         <source>audit: only this user.</source>
         <translation>audit：仅此用户。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>NAME</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>audit: only this station.</source>
         <translation>audit：仅此工位。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="53"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="62"/>
         <source>error: --since: %1</source>
         <translation>错误：--since：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="74"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="89"/>
         <source>no audit entry matches</source>
         <translation>没有匹配的审计记录</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>user</source>
         <translation>用户</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>detail</source>
         <translation>详情</translation>
     </message>
@@ -5153,49 +5163,49 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="31"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>产品的检验证书：其最新记录，输出为 PDF，或用 --json 输出为 JSON</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>The results database (see results).</source>
         <translation>结果数据库（参见 results）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate：使用该 id 的记录，而不是最新记录。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="39"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="59"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>错误：请指定一个序列号，或用 --id ID 指定一条记录；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="67"/>
         <source>error: the serial number is empty</source>
         <translation>错误：序列号为空</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="142"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="73"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="154"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="80"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>错误：本程序无法生成 PDF（没有 Qt GUI 应用程序）；请使用 --json</translation>
     </message>
@@ -5205,28 +5215,28 @@ Configuration changes written but not stored are discarded.</source>
         <translation>错误：%2 中没有记录 %1（%3）</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="104"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>错误：记录 %1 属于序列号 %2，而不是 %3</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="114"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="147"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="121"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>错误：%2 中没有序列号 %1 的记录</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="141"/>
         <source>wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="145"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="157"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>已写入 %1：序列号 %2，%3，记录于 %4</translation>
     </message>
@@ -5234,19 +5244,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="36"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>下线检测工位：配方、结果数据库、产品检验证书</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="41"/>
         <source>Subcommands:
 </source>
         <translation>子命令：
 </translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="44"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -5255,22 +5265,22 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 &quot;opentop-cli help eol&quot; 列出全部选项；每个子命令只接受自己的选项。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="92"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>错误：请指定子命令：eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="94"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>错误：未知子命令 &quot;eol %1&quot;；子命令：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="98"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>请参阅 &quot;opentop-cli help eol&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="114"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>错误：eol %1：--%2 不是该子命令的选项；用法：eol %3</translation>
     </message>
@@ -5399,37 +5409,37 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeApproveCommand</name>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="35"/>
         <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
         <translation>批准已签名的配方供产线使用（工程师）：之后工位即可运行</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="49"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="61"/>
         <source>%1: the recipe is not valid, so it cannot be approved:</source>
         <translation>%1：配方无效，因此无法批准：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="80"/>
         <source>error: %1; the recipe was not approved</source>
         <translation>错误：%1；配方未批准</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="98"/>
         <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
         <translation>%1 版本 %2 已由 %3 批准（批准 %4，校验和 %5）</translation>
     </message>
@@ -5437,49 +5447,49 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="27"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>按驱动器设备描述检查配方（以及 CSV 文件中的单台数值）</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check：同时检查该 CSV 文件中每台产品的单台数值。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="54"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="55"/>
         <source>error: %1 refused: %2</source>
         <translation>错误：%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="65"/>
         <source>%1, serial %2</source>
         <translation>%1，序列号 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="87"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="91"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="89"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="93"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 无效：%n 个问题；不得用它运行任何测试</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="97"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有效：%1 版本 %2：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="100"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="107"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>；已检查 %1 中的 %n 台产品</numerusform>
@@ -5489,220 +5499,220 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>从标准样机生成配方：备份文件或总线上的驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：标准样机的备份文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：标准样机在总线上的驱动器，例如 1,2（配合连接选项）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="49"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：产品名称。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版本。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：替换已有的配方文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="55"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
         <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
         <translation>recipe create --drives：让标准样机按配方步骤运行一次（电机会转动），并以测量值确定保持步骤的限值。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
         <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
         <translation>recipe create --measure：测量值两侧的裕量，以测量值的 % 表示（默认 25；至少为该参数满量程的 5 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
         <source>PERCENT</source>
         <translation>百分比</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
         <source>recipe create --measure: run the motors.</source>
         <translation>recipe create --measure：确认让电机运转。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="75"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="172"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="282"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>nothing written</source>
         <translation>未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已读取 %2 项设定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="106"/>
         <source>interrupted while reading the golden unit: nothing written</source>
         <translation>读取标准样机时中断：未写入任何文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="117"/>
         <source>give its variant with --variant %1=VARIANT</source>
         <translation>请用 --variant %1=机型 指定其机型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="130"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>Would run the golden unit through the recipe&apos;s steps:</source>
         <translation>将让标准样机按配方步骤运行：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="136"/>
         <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
         <translation>这会使电机转动：加上 --yes 才会运行。未运行任何电机，也未写入任何文件。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="141"/>
         <source>measuring the golden unit (Ctrl-C stops every motor):</source>
         <translation>正在测量标准样机（按 Ctrl-C 停止所有电机）：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="146"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="150"/>
         <source>drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="157"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="162"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="170"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>WARNING: %1 is not confirmed stopped</source>
         <translation>警告：%1 未确认停止</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="179"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
         <source>limits from the golden unit:</source>
         <translation>由标准样机确定的限值：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="183"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="189"/>
         <source>  drive %1, step %2: %3</source>
         <translation>  驱动器 %1，步骤 %2：%3</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="206"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="213"/>
         <source>error: %1; usage: eol %2</source>
         <translation>错误：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="218"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>意外的参数 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="214"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="222"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>请指定 --from-backup FILE 或 --drives LIST 之一</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="217"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
         <source>--measure needs the golden unit on the bus: give --drives LIST</source>
         <translation>--measure 需要总线上的标准样机：请指定 --drives 列表</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="223"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>--margin is for --measure</source>
         <translation>--margin 仅用于 --measure</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
         <source>--margin %1: give a percentage from 1 to 100</source>
         <translation>--margin %1：请输入 1 到 100 的百分比</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>请用 --product NAME 指定产品名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="241"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>请用 --revision REV 指定配方版本</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="236"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="244"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>请用 -o RECIPE 指定要写入的配方文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="248"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>错误：%1 已存在；使用 --force 进行替换</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="243"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
         <source>error: %1; nothing read</source>
         <translation>错误：%1；未读取任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="272"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="278"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="290"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="296"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="308"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已写入 %1：%2 版本 %3，%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="303"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="316"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>错误：配方未通过 &quot;eol recipe check&quot;：请修正，然后用 &quot;opentop-cli eol recipe sign %1&quot; 签名</translation>
     </message>
@@ -5710,127 +5720,132 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="61"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>显示配方：位置、按标签列出的设定（含单位）、步骤和限值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="73"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="74"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="84"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>  no settings</source>
         <translation>  无设定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>  setting</source>
         <translation>  设定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>  per-unit value</source>
         <translation>  单台数值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>range</source>
         <translation>范围</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>from</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="99"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="106"/>
         <source>CSV file by serial</source>
         <translation>按序列号取自 CSV 文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="107"/>
         <source>typed by the operator</source>
         <translation>由操作员输入</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="108"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="112"/>
         <source>  no test steps</source>
         <translation>  无测试步骤</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="111"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="115"/>
         <source>  steps:</source>
         <translation>  步骤：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="174"/>
         <source>%1, revision %2</source>
         <translation>%1，版本 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="171"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="180"/>
+        <source>serial numbers: %1</source>
+        <translation>序列号：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="181"/>
         <source>checksum %1</source>
         <translation>校验和 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>variants</source>
         <translation>机型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>firmware</source>
         <translation>固件</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="184"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="194"/>
         <source>any</source>
         <translation>任意</translation>
     </message>
@@ -5838,29 +5853,29 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="27"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>接受手工编辑的配方：仅在通过检查时生成新的校验和</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="49"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>错误：%1 未通过检查（%n 个问题）；未签名</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="56"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="57"/>
         <source>error: %1; not signed</source>
         <translation>错误：%1；未签名</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="68"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="70"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 已签名（%2）；未作任何修改</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="74"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>已签名 %1：%2 版本 %3，%4</translation>
     </message>
@@ -5868,314 +5883,314 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="73"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>列出结果数据库中的产品及其直通率，或导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>结果数据库：SQLite 文件、sqlite:PATH 或 postgresql://user@host/db（默认：OPENTOP_EOL_DB，否则为 ~/.local/share/opentop/results.db）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results：只列出此序列号；含 * 或 ? 时为不区分大小写的模式（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results：开始时间不早于 T（2026-11-24、2026-11-24T06:00、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: started before T.</source>
         <translation>results：开始时间早于 T。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
         <source>results: only this recipe (product name).</source>
         <translation>results：仅该配方（产品名称）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only this station.</source>
         <translation>results：仅该工位。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>results: only the newest N units.</source>
         <translation>results：仅最新的 N 台产品。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="102"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results：输出 CSV（RFC 4180）到标准输出或 -o FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="107"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield：各班次的开始时间（本地时间，默认 06:00,14:00,22:00）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="140"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; 不是时间；请使用 2026-11-24、2026-11-24T06:00（本地时间，或带 Z 或 +01:00）、8h、2d、today 或 yesterday</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="150"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="297"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
         <source>--%1: %2</source>
         <translation>--%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="171"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 不早于 --until %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
         <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
         <translation>results：仅该版本的配方（以校验和指定，即 eol recipe check 输出的值）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="95"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
         <source>SUM</source>
         <translation>SUM</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="97"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
         <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
         <translation>results：pass、fail、error（工位错误）、interrupted、aborted 或 running。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="104"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
         <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
         <translation>results：按配方版本和班次列出直通率、二次合格率、最终合格率及不合格原因；工位错误和中止不计入合格率。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="177"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;：请指定 pass、fail、error、interrupted、aborted 或 running</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="185"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;：请给出从 1 起的产品台数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="195"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
         <source>no unit matches</source>
         <translation>没有匹配的产品</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>approved by</source>
         <translation>批准人</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>drives</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="231"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>shift</source>
         <translation>班次</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>serials</source>
         <translation>序列号数</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>first pass</source>
         <translation>一次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>second pass</source>
         <translation>二次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>last pass</source>
         <translation>最终合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>failed</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>station errors</source>
         <translation>工位错误</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="253"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>Yield per recipe version (station errors and aborts are not counted)</source>
         <translation>各配方版本的合格率（不计入工位错误和中止）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="261"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>%1: checksum %2</source>
         <translation>%1：校验和 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>not finished</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="262"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
         <source>Per shift</source>
         <translation>各班次</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="282"/>
         <source>Failure reasons</source>
         <translation>不合格原因</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="277"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="283"/>
         <source>Station errors (not counted in yield)</source>
         <translation>工位错误（不计入合格率）</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="294"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
         <source>wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="303"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>错误：意外的参数 &quot;%1&quot;；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="309"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
         <source>error: give --csv or --json, not both</source>
         <translation>错误：--csv 和 --json 只能指定其一</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="313"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="319"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>错误：-o 指定的是 CSV 文件：请同时指定 --csv</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="318"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="324"/>
         <source>error: --shifts is for --yield</source>
         <translation>错误：--shifts 仅用于 --yield</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="328"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="333"/>
         <source>error: --shifts %1: %2</source>
         <translation>错误：--shifts %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="345"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="372"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="380"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="352"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="382"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="393"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
@@ -6242,153 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="58"/>
+        <location filename="../cli/EolRunCommand.cpp" line="60"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>在下线工位设定并测试一台产品；记录结果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>产品序列号（按条码读取）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="65"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>无用户的工位上的测试者（默认：登录名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>本工位名称（默认：主机名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含单台数值的 CSV 文件，按序列号对应。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由操作员输入的单台数值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="76"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技术员许可配方规则不允许的重新测试（已合格的序列号，或测试次数已用完）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：请写成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="113"/>
+        <location filename="../cli/EolRunCommand.cpp" line="115"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允许 %3；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="140"/>
         <source>any %1 variant</source>
         <translation>任何 %1 机型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="147"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在站号 %2 没有位置；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="161"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="176"/>
+        <location filename="../cli/EolRunCommand.cpp" line="179"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方无效；未发送任何内容：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="207"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <source>--serial: %1; nothing was sent</source>
+        <translation>--serial：%1；未发送任何内容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="218"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="211"/>
+        <location filename="../cli/EolRunCommand.cpp" line="224"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：单元 %1（开始于 %2）因工作站进程已结束而未完成，现已记录为“中断”。请确认其电机已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="216"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 条结果尚未能发送到结果数据库</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="305"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>error: %1; nothing was sent</source>
         <translation>错误：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="307"/>
+        <location filename="../cli/EolRunCommand.cpp" line="323"/>
         <source>a technician allows it with --retest</source>
         <translation>技术员可用 --retest 许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="259"/>
+        <location filename="../cli/EolRunCommand.cpp" line="272"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；按 --retest 的许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="276"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="268"/>
+        <location filename="../cli/EolRunCommand.cpp" line="283"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="313"/>
+        <location filename="../cli/EolRunCommand.cpp" line="329"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驱动器未确认停止；未进行任何检测</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="301"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
@@ -6396,45 +6416,45 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunIdentity</name>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="50"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="88"/>
         <source>the results database is not open</source>
         <translation>结果数据库未打开</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="53"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="101"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="65"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="107"/>
         <source>refused: %1; nothing was sent</source>
         <translation>拒绝：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="66"/>
         <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
         <translation>此工位有用户：请用 --user NAME 指定测试者（密码取自 OPENTOP_PASSWORD 或终端）</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="73"/>
         <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
         <translation>错误：有用户的工位上，操作员即登录的用户（--user）；不接受 --operator</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="98"/>
         <source>run-units: recipe checksum %1 is not approved</source>
         <translation>run-units：配方校验和 %1 未批准</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="113"/>
         <source>refused: %1 Nothing was sent.</source>
         <translation>拒绝：%1 未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="123"/>
         <source>%1 logged in; recipe approved by %2 (approval %3)</source>
         <translation>%1 已登录；配方由 %2 批准（批准 %3）</translation>
     </message>
@@ -6442,43 +6462,43 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunOutput</name>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="85"/>
-        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <location filename="../cli/EolRunOutput.cpp" line="98"/>
+        <location filename="../cli/EolRunOutput.cpp" line="121"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>ok</source>
         <translation>正常</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <location filename="../cli/EolRunOutput.cpp" line="165"/>
         <source>rev. %1</source>
         <translation>版本 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <location filename="../cli/EolRunOutput.cpp" line="167"/>
         <source>attempt %1</source>
         <translation>第 %1 次测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <location filename="../cli/EolRunOutput.cpp" line="174"/>
         <source>the result was NOT recorded: %1</source>
         <translation>结果未记录：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <location filename="../cli/EolRunOutput.cpp" line="178"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>结果数据库没有响应：结果已保存在本工作站（%1），下次工作站程序连上数据库时会发送</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <location filename="../cli/EolRunOutput.cpp" line="183"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未确认电机已停止：%1</translation>
     </message>
@@ -6528,42 +6548,37 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="120"/>
+        <location filename="../model/station/EolStation.cpp" line="121"/>
         <source>a unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="124"/>
+        <location filename="../model/station/EolStation.cpp" line="125"/>
         <source>open a recipe first</source>
         <translation>请先打开配方</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
+        <location filename="../model/station/EolStation.cpp" line="145"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units：序列号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="142"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>not connected to a bus</source>
         <translation>未连接总线</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="146"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驱动器确认安全后，单元 %1 会立即开始</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="151"/>
-        <source>no serial number</source>
-        <translation>无序列号</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="182"/>
+        <location filename="../model/station/EolStation.cpp" line="185"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>序列号 %1 重新测试,由 %2 批准:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="227"/>
         <source>no unit was started yet</source>
         <translation>尚未开始任何产品的测试</translation>
     </message>
@@ -6622,102 +6637,102 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="25"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>错误：请指定一个配方文件；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="39"/>
         <source>no such file</source>
         <translation>文件不存在</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="40"/>
+        <location filename="../cli/EolSupport.cpp" line="41"/>
         <source>is a directory; name a recipe file</source>
         <translation>是目录；请指定配方文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="42"/>
+        <location filename="../cli/EolSupport.cpp" line="43"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>不是普通文件（是设备、FIFO 或套接字）；请指定配方文件</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="44"/>
+        <location filename="../cli/EolSupport.cpp" line="45"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>大于 %1 MB，超过配方文件的上限</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="48"/>
+        <location filename="../cli/EolSupport.cpp" line="49"/>
         <source>cannot be read: %1</source>
         <translation>无法读取：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="50"/>
-        <location filename="../cli/EolSupport.cpp" line="171"/>
+        <location filename="../cli/EolSupport.cpp" line="51"/>
+        <location filename="../cli/EolSupport.cpp" line="177"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="77"/>
-        <location filename="../cli/EolSupport.cpp" line="188"/>
+        <location filename="../cli/EolSupport.cpp" line="78"/>
+        <location filename="../cli/EolSupport.cpp" line="199"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="84"/>
+        <location filename="../cli/EolSupport.cpp" line="86"/>
         <source>error: %1 refused: %2</source>
         <translation>错误：%1 已拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="91"/>
+        <location filename="../cli/EolSupport.cpp" line="95"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 在 OpenTOP 写入后被修改过（校验和不一致），因此任何工位都不会运行它。请用 &quot;opentop-cli eol recipe check %1&quot; 检查，确认无误后用 &quot;opentop-cli eol recipe sign %1&quot; 签名</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="109"/>
+        <location filename="../cli/EolSupport.cpp" line="113"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="140"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>%n 个位置</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="135"/>
+        <location filename="../cli/EolSupport.cpp" line="141"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 项设定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="137"/>
+        <location filename="../cli/EolSupport.cpp" line="143"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>%n 个单台数值</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="138"/>
+        <location filename="../cli/EolSupport.cpp" line="144"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n 个步骤</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="145"/>
+        <location filename="../cli/EolSupport.cpp" line="151"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>要写入的文件（recipe create；results --csv；certificate）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="146"/>
+        <location filename="../cli/EolSupport.cpp" line="152"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="179"/>
+        <location filename="../cli/EolSupport.cpp" line="188"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>错误：%1 处没有结果数据库（尚未记录任何内容）；请用 --db URL 指定</translation>
     </message>
@@ -6749,139 +6764,139 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolUserCommand</name>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <location filename="../cli/EolUserCommand.cpp" line="72"/>
         <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
         <translation>添加用户（操作员、技术员、工程师或管理员）；第一个用户是管理员，不需要 --user</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <location filename="../cli/EolUserCommand.cpp" line="75"/>
         <source>List the users of the results database</source>
         <translation>列出结果数据库的用户</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <location filename="../cli/EolUserCommand.cpp" line="77"/>
         <source>Disable a user: they can no longer log in; their records stay</source>
         <translation>停用用户：无法再登录；其记录保留</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <location filename="../cli/EolUserCommand.cpp" line="81"/>
         <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
         <translation>设置用户密码（自己的需输入旧密码，管理员可设置任何人的）</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <location filename="../cli/EolUserCommand.cpp" line="90"/>
         <source>user add: operator, technician, engineer or administrator.</source>
         <translation>user add：operator、technician、engineer 或 administrator。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
         <source>ROLE</source>
         <translation>角色</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
         <source>user add: the name shown on the screen.</source>
         <translation>user add：屏幕上显示的名称。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <location filename="../cli/EolUserCommand.cpp" line="94"/>
         <source>TEXT</source>
         <translation>文本</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="108"/>
-        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <location filename="../cli/EolUserCommand.cpp" line="109"/>
+        <location filename="../cli/EolUserCommand.cpp" line="168"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <location filename="../cli/EolUserCommand.cpp" line="124"/>
         <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
         <translation>没有用户：此工位未受管理（任何人都可运行、编辑和退出）；添加第一位管理员：opentop-cli eol user add NAME --role administrator</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>user</source>
         <translation>用户</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>role</source>
         <translation>角色</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>active</source>
         <translation>启用</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>created</source>
         <translation>创建时间</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>no (disabled)</source>
         <translation>否（已停用）</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <location filename="../cli/EolUserCommand.cpp" line="145"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <location filename="../cli/EolUserCommand.cpp" line="153"/>
         <source>error: --role is one of: %1</source>
         <translation>错误：--role 须为以下之一：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <location filename="../cli/EolUserCommand.cpp" line="183"/>
         <source>Present password for %1: </source>
         <translation>%1 的当前密码：</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="191"/>
-        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <location filename="../cli/EolUserCommand.cpp" line="194"/>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
         <source>New password for %1: </source>
         <translation>%1 的新密码：</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <location filename="../cli/EolUserCommand.cpp" line="203"/>
         <source>user %1 added as %2</source>
         <translation>已添加用户 %1，角色 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
         <source>user %1 disabled</source>
         <translation>已停用用户 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <location filename="../cli/EolUserCommand.cpp" line="221"/>
         <source>password of %1 changed</source>
         <translation>已更改 %1 的密码</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <location filename="../cli/EolUserCommand.cpp" line="230"/>
         <source>error: %1; nothing was changed</source>
         <translation>错误：%1；未做任何更改</translation>
     </message>
@@ -6935,42 +6950,42 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="99"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="134"/>
         <source>Stopping the drives, then giving control back to their inputs…</source>
         <translation>正在停止驱动器，然后将控制权交还其输入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="135"/>
         <source>Stopping the drives…</source>
         <translation>正在停止驱动器…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>正在将控制权交还驱动器的输入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Not every drive is safe</source>
         <translation>并非所有驱动器都处于安全状态</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Could not %1 every drive:</source>
         <translation>以下驱动器未能%1：</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="162"/>
         <source>Stay connected</source>
         <translation>保持连接</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="163"/>
         <source>Go on anyway</source>
         <translation>仍然继续</translation>
     </message>
@@ -7214,27 +7229,27 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="29"/>
         <source>no such file</source>
         <translation>文件不存在</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="31"/>
         <source>is a directory; name a backup file</source>
         <translation>是目录；请指定备份文件</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="33"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>不是普通文件（是设备、FIFO 或套接字）；请指定备份文件</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="35"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="43"/>
         <source>error: %1 refused: %2</source>
         <translation>错误：%1 已拒绝：%2</translation>
     </message>
@@ -7273,135 +7288,135 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="44"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>按名称读取参数，以工程单位显示（使用 --raw 则读取寄存器）</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>读取一个组的全部参数（参见 params）。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="51"/>
         <source>Read every readable parameter.</source>
         <translation>读取全部可读参数。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>按地址读取寄存器：ADDR 或 ADDR:COUNT（0x.. 或十进制）。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw 的功能码：读取用 3（保持寄存器）或 4（输入寄存器），写入用 6 或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="56"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="64"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>错误：请先指定一个站号：get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="72"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>错误：请指定参数名，或只指定 --group、--all、--raw 中的一个</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="79"/>
-        <location filename="../cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="80"/>
+        <location filename="../cli/GetCommand.cpp" line="210"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="91"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>错误：%1 没有组 &quot;%2&quot;；可用组：%3</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>错误：%1 是只写命令，无法读取</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="110"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>错误：%1 没有参数 &quot;%2&quot;；请参阅 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="124"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Raw</source>
         <translation>原始值</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Label</source>
         <translation>标签</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="159"/>
         <source>(failed: %1)</source>
         <translation>（失败：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="161"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! 超出设备描述的允许值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="168"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>错误：%n 个参数无法读取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="191"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>错误：--raw 需要 ADDR 或 ADDR:COUNT（地址 0x0000–0xFFFF，数量 1–125）以及 --fc 3 或 4</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Address</source>
         <translation>地址</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Hex</source>
         <translation>十六进制</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Decimal</source>
         <translation>十进制</translation>
     </message>
@@ -7485,89 +7500,89 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GoldenMeasureButton</name>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="36"/>
         <source>Measure limits…</source>
         <translation>测量限值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="42"/>
         <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
         <translation>让总线上的标准样机按配方步骤运行一次，以测量值确定保持步骤的限值：测量值 ± 25 %（至少为满量程的 5 %），不会比原限值宽</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="52"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="87"/>
         <source>Measure limits on the golden unit</source>
         <translation>在标准样机上测量限值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="60"/>
         <source>The recipe has no positions.</source>
         <translation>配方没有任何工位。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="61"/>
         <source>The recipe cannot be read: %1</source>
         <translation>无法读取配方：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="65"/>
         <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
         <translation>站号 %1 不是总线上的驱动器：请先连接标准样机并扫描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="70"/>
         <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
         <translation>要让标准样机按配方步骤运行吗？以下电机会转动：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="76"/>
         <source>Run the motors</source>
         <translation>运行电机</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="90"/>
         <source>The bus is not connected.</source>
         <translation>总线未连接。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Measuring the golden unit…</source>
         <translation>正在测量标准样机…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="98"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="100"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="102"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="104"/>
         <source>stopped by the user</source>
         <translation>由用户停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="103"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="108"/>
         <source>Machine number %1: %2</source>
         <translation>站号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="120"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1 未确认停止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="117"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
         <source>No limits were taken: %1</source>
         <translation>未确定任何限值：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="129"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>站号 %1，步骤 %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="130"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="135"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>保持步骤的限值已按标准样机确定。请确认后保存配方。</translation>
     </message>
@@ -7659,98 +7674,98 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="64"/>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="65"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="72"/>
+        <location filename="../cli/GroupCheck.cpp" line="73"/>
         <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
         <translation>注意：--no-group-check：未查找通信组 %1 中的驱动器（它们也会执行发往 %1 的内容）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <location filename="../cli/GroupCheck.cpp" line="79"/>
         <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
         <translation>错误：不知道此总线上有哪些驱动器，因此无法列出通信组 %1 中的驱动器（它们也会执行发往 %1 的内容，且不应答）；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <location filename="../cli/GroupCheck.cpp" line="84"/>
         <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
         <translation>请先扫描总线（opentop-cli scan）、用 --bus-drives LIST 指定其驱动器，或加上 --no-group-check 不检查直接发送</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="108"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：无法读取 %1 的通信组</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <location filename="../cli/GroupCheck.cpp" line="119"/>
         <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
         <translation>注意：总线上的驱动器为 %1，取自%2；之后加入的驱动器要到下次扫描才会知道</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="133"/>
+        <location filename="../cli/GroupCheck.cpp" line="134"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才会发送给 %1 和 %2 全部；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>not readable</source>
         <translation>不可读</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="192"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Read back from the drives of the group:</source>
         <translation>从该组的驱动器回读：</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="196"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="197"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>verified</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="198"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>DIFFERS from what was written</source>
         <translation>与写入值不同</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="199"/>
+        <location filename="../cli/GroupCheck.cpp" line="200"/>
         <source>not verified</source>
         <translation>未确认</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="247"/>
+        <location filename="../cli/GroupCheck.cpp" line="248"/>
         <source>off</source>
         <translation>关闭</translation>
     </message>
@@ -7846,12 +7861,12 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
         <translation>通信组</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Their values are read back afterwards.</source>
         <translation>之后会回读它们的值。</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="65"/>
         <source>Send, also to %1</source>
         <translation>发送，同时发给 %1</translation>
     </message>
@@ -8097,27 +8112,27 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::IdentityDialog</name>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="23"/>
         <source>Who is it?</source>
         <translation>请确认身份</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="25"/>
         <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
         <translation>要%1，此工位需要%2或更高角色。请用用户名和密码登录。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="42"/>
         <source>User name:</source>
         <translation>用户名:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="43"/>
         <source>Password:</source>
         <translation>密码:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="62"/>
         <source>Refused: %1</source>
         <translation>已拒绝：%1</translation>
     </message>
@@ -8805,79 +8820,127 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>实时监视速度、负载、状态、输入和报警（按 Ctrl-C 结束）</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="54"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>每台驱动器的采样间隔（ms），%1–%2（默认 500）。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="57"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="58"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>每台驱动器采样 N 次后停止（默认：直到按 Ctrl-C）。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="59"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="50"/>
-        <source>Also write every sample to FILE (CSV with a header).</source>
-        <translation>同时将每次采样写入 FILE（带表头的 CSV）。</translation>
+        <location filename="../cli/MonitorCommand.cpp" line="61"/>
+        <source>Also write every sample to FILE (CSV with a header; a row with a note where the link was lost and where it came back).</source>
+        <translation>同时将每次采样写入 FILE（带表头的 CSV；连接丢失处和恢复处各有一行备注）。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="65"/>
+        <source>When the link to the bus is lost, exit 1 if it is not back within SECONDS (default: reconnect by itself, 0.5 s to 5 s apart, until Ctrl-C).</source>
+        <translation>与总线的连接丢失时，若 SECONDS 秒内未恢复则以 1 退出（默认：自动重新连接，间隔 0.5 秒至 5 秒，直到按 Ctrl-C）。</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="67"/>
+        <source>SECONDS</source>
+        <translation>SECONDS</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="79"/>
         <source>error: usage: %1</source>
         <translation>错误：用法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="89"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>错误：--interval 必须为 %1–%2 ms，实际为 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="102"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>错误：--count 必须是 1 以上的整数采样次数，实际为 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="113"/>
+        <source>error: --give-up must be a number of seconds, more than 0 and at most %1, got &quot;%2&quot;</source>
+        <translation>错误：--give-up 必须是大于 0 且不超过 %1 的秒数，收到“%2”</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="125"/>
         <source>error: cannot write %1: %2</source>
         <translation>错误：无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="134"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="154"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>警告：站号 %1：%2；速度仅以 r/min 显示</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="194"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>错误：无法写入 %1：%2；监视已停止</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="233"/>
+        <source>%1 link lost: %2 (%3); reconnecting for up to %4 s (Ctrl-C ends)</source>
+        <translation>%1 连接丢失：%2（%3）；最多 %4 秒内持续重新连接（Ctrl-C 结束）</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="237"/>
+        <source>%1 link lost: %2 (%3); reconnecting until it is back (Ctrl-C ends)</source>
+        <translation>%1 连接丢失：%2（%3）；持续重新连接直到恢复（Ctrl-C 结束）</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="246"/>
+        <source>%1 link back after %2 s: %3; monitoring goes on</source>
+        <translation>%1 连接已在 %2 秒后恢复：%3；继续监视</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="261"/>
+        <source>error: the link to %1 was lost at %2 and is not back after %3 s (--give-up %4): %5; monitoring stopped</source>
+        <translation>错误：与 %1 的连接于 %2 丢失，%3 秒后仍未恢复（--give-up %4）：%5；监视已停止</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="303"/>
         <source>%1 error: %2</source>
         <translation>%1 错误：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::MonitorCsv</name>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="33"/>
+        <source>link lost</source>
+        <translation>连接丢失</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="38"/>
+        <source>link back</source>
+        <translation>连接恢复</translation>
     </message>
 </context>
 <context>
@@ -8897,42 +8960,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Target shown</source>
         <translation>目标显示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Speed shown</source>
         <translation>速度显示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="127"/>
+        <location filename="../cli/MonitorOutput.cpp" line="128"/>
         <source>Active alarm</source>
         <translation>当前报警</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="169"/>
+        <location filename="../cli/MonitorOutput.cpp" line="170"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>code %1</source>
         <translation>代码 %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>active</source>
         <translation>发生中</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="179"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="180"/>
+        <location filename="../cli/MonitorOutput.cpp" line="181"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -9051,12 +9114,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="33"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="34"/>
         <source>Switch to communication priority…</source>
         <translation>切换到通信优先级…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="58"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="59"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -9065,53 +9128,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 切换到“%4”会将这些命令交给总线：输入端子不再能启动或停止电机，设备自身的操作元件也将无效，直到切换回“%2”。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
         <source>Switch to communication priority</source>
         <translation>切换到通信优先级</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="86"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>站号 %1 将通过总线接收运行、停止、方向和速度选择（%2 = &quot;%3&quot;）。之后其输入端子不再能启动或停止电机。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="91"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="92"/>
         <source>Switch</source>
         <translation>切换</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="100"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="101"/>
         <source>Switching to communication priority…</source>
         <translation>正在切换到通信优先级…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="108"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>站号 %1 现在通过总线接收运动命令。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="110"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="111"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>无法切换控制优先级：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="120"/>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="126"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Return to I/O priority</source>
         <translation>恢复为 I/O 优先级</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="122"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>站号 %1 将重新通过输入端子接收运行、停止、方向和速度选择，并拒绝来自总线的运动命令。如果输入为运行，电机就会运行。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="129"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="130"/>
         <source>Returning to I/O priority…</source>
         <translation>正在恢复为 I/O 优先级…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="138"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="139"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>站号 %1 已重新按输入端子动作。</translation>
     </message>
@@ -9153,184 +9216,184 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="38"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>&amp;Write to all</source>
         <translation>全部写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="40"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="41"/>
         <source>Write one setting to several drives</source>
         <translation>向多台驱动器写入一项设定</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Machine number</source>
         <translation>站号</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Model</source>
         <translation>型号</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Current value</source>
         <translation>当前值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="59"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: another family (%1)</source>
         <translation>未写入：其他系列（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="78"/>
         <source>Not written: not identified (%1)</source>
         <translation>未写入：未识别（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="83"/>
         <source>&amp;Setting:</source>
         <translation>设定(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="89"/>
         <source>New &amp;value:</source>
         <translation>新值(&amp;V)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="162"/>
         <source>cannot be read</source>
         <translation>无法读取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="165"/>
         <source>reading…</source>
         <translation>正在读取…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="193"/>
         <source>read failed: %1</source>
         <translation>读取失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>驱动器 %1：%2 尚未知，而允许值取决于该项。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="226"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="228"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>各驱动器的单位不同（%1）；请逐台写入。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驱动器 %1（%2）不允许：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>驱动器 %1 的通信组不允许：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>None of the selected drives is identified.</source>
         <translation>所选驱动器均未识别。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="261"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="315"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="266"/>
         <source>Allowed on %1</source>
         <translation>%1 上允许</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="272"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="274"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="273"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="275"/>
         <source>Allowed on %1.</source>
         <translation>%1 上允许。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="323"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>仍要在 %n 台驱动器上设置吗？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="322"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="324"/>
         <source>&amp;Set it</source>
         <translation>设置(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>将 %1 写入站号 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Nothing was written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="353"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在将 %1 写入 %n 台驱动器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="365"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已在 %n 台驱动器中的 %1 台上写入并校验。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
         <source>writing…</source>
         <translation>正在写入…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written and verified</source>
         <translation>已写入并校验</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已写入，未校验（无法回读）</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
         <source>Failed: %1</source>
         <translation>失败：%1</translation>
     </message>
@@ -9338,57 +9401,57 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::NameCommand</name>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="38"/>
+        <location filename="../cli/NameCommand.cpp" line="39"/>
         <source>Name a machine (&quot;Infeed conveyor 3&quot;) or show the names of the bus</source>
         <translation>为机器命名（“Infeed conveyor 3”）或显示此总线的名称</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="44"/>
+        <location filename="../cli/NameCommand.cpp" line="45"/>
         <source>error: name takes a machine number and one name; put a name with spaces in quotes: name 1 &quot;Infeed conveyor 3&quot;</source>
         <translation>错误：name 需要一个站号和一个名称；含空格的名称请加引号：name 1 &quot;Infeed conveyor 3&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="52"/>
+        <location filename="../cli/NameCommand.cpp" line="53"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="62"/>
+        <location filename="../cli/NameCommand.cpp" line="63"/>
         <source>No machine of this bus has a name yet; give one with: name ID &quot;TEXT&quot;</source>
         <translation>此总线的机器尚无名称；请用以下方式命名：name ID &quot;TEXT&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="77"/>
+        <location filename="../cli/NameCommand.cpp" line="78"/>
         <source>error: &quot;%1&quot; is not a machine number 1–247</source>
         <translation>错误：“%1”不是 1–247 的站号</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="87"/>
+        <location filename="../cli/NameCommand.cpp" line="88"/>
         <source>Machine number %1 has no name.</source>
         <translation>站号 %1 没有名称。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="93"/>
+        <location filename="../cli/NameCommand.cpp" line="94"/>
         <source>error: %1 Nothing was changed.</source>
         <translation>错误：%1 未更改任何内容。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="106"/>
+        <location filename="../cli/NameCommand.cpp" line="107"/>
         <source>Machine number %1 has no name now.</source>
         <translation>站号 %1 现在没有名称。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="107"/>
+        <location filename="../cli/NameCommand.cpp" line="108"/>
         <source>%1 is named now; messages, files and scans show it.</source>
         <translation>%1 已命名；消息、文件和扫描都会显示此名称。</translation>
     </message>
@@ -9568,112 +9631,112 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="39"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>Parameter initialisation</source>
         <translation>参数初始化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="49"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="50"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>将驱动器 %1 的全部设定恢复为出厂默认值，包括通信设定：之后驱动器可能只在默认波特率下应答，控制优先级也会恢复为输入端子。电机必须处于停止状态。发送前会列出对该驱动器的影响。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="57"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>初始化驱动器 %1 的全部参数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="59"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="60"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>先确认，并列出驱动器及将要改变的内容</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="87"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="88"/>
         <source>Reading what the initialisation would change…</source>
         <translation>正在读取初始化将改变的内容…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="111"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="112"/>
         <source>Afterwards:</source>
         <translation>之后：</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="116"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="117"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>您对该驱动器的 %n 项未写入修改将被放弃。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>已发送：%1，仅发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>已发送：%1，发给站号 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="127"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="133"/>
         <source>Initialise drive %1</source>
         <translation>初始化驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Reset every setting of %1 to its factory defaults?</source>
         <translation>要将 %1 的所有设定恢复为出厂默认值吗？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="142"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="143"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>已取消；未发送任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="150"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="151"/>
         <source>Initialising drive %1…</source>
         <translation>正在初始化驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="159"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>驱动器 %1 未确认初始化：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="161"/>
         <source>Nothing was sent: %1</source>
         <translation>未发送任何内容：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="173"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>&amp;Reconnect at %1 bit/s after the power-up</source>
         <translation>上电后以 %1 bit/s 重新连接(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="177"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="178"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>驱动器 %1 已初始化；正在重新读取其值…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>驱动器 %1 已初始化；%n 个值无法回读（它现在可能只在默认通信设定下应答）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="187"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="188"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>驱动器 %1 已恢复出厂默认值；已重新读取数值。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="214"/>
         <source>Reconnecting at %1 bit/s in %2 s…</source>
         <translation>%2 s 后以 %1 bit/s 重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="226"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="227"/>
         <source>Reconnect at %1 bit/s from the Bus menu.</source>
         <translation>请从“总线”菜单以 %1 bit/s 重新连接。</translation>
     </message>
@@ -10257,32 +10320,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="39"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生产模式（下线检测）(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>下线检测工位的操作员界面；切换回来之前不能编辑参数（Ctrl+Shift+P）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>&amp;Full screen</source>
         <translation>全屏(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="54"/>
         <source>&amp;Station name…</source>
         <translation>工作站名称(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>本下线检测站记录在每个单元上的名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="64"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -10291,58 +10354,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 能够记录结果之前，无法测试任何产品。工作站会自动重试。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="91"/>
         <source>Station name</source>
         <translation>工作站名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="84"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>本工作站记录在每个单元上的名称（同一产线的每个工作站需各有其名）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="92"/>
         <source>A station needs a name.</source>
         <translation>工作站需要名称。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="93"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>正在检测单元：请在完成后再更改名称。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="110"/>
         <source>Production mode</source>
         <translation>生产模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="111"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>正在测试一台产品。请先取消测试（Esc）或等待测试完成，再切换回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="63"/>
         <source>Results database</source>
         <translation>结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="124"/>
         <source>leave production mode</source>
         <translation>退出生产模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="171"/>
         <source>A unit is being tested</source>
         <translation>正在测试一台产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="172"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>正在测试产品 %1。取消测试并%2？会先停止其电机；该产品将记录为已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="184"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -10415,42 +10478,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="54"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="56"/>
         <source>Open recipe…</source>
         <translation>打开配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="57"/>
         <source>Per-unit values…</source>
         <translation>单台数值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="63"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Now</source>
         <translation>当前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
         <source>Unit %1: %2…</source>
         <translation>产品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>Recipe not usable</source>
         <translation>配方不可用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10459,117 +10522,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
         <source>open another recipe</source>
         <translation>打开其他配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="228"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版本 %2 — %n 台驱动器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;无：请打开该产品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工位 %1 · 结果：%2 · 单台数值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>loaded</source>
         <translation>已载入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="118"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>单元 %1：先使工作站的驱动器进入安全状态…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="278"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="288"/>
         <source>drive %1 (%2)</source>
         <translation>驱动器 %1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="280"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>Unit %1 — attempt %2</source>
         <translation>产品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="316"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：结果服务器没有响应。服务器响应后会自动发送。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 结果数据库恢复后，已于 %2 记录。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="156"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>Unit %1</source>
         <translation>产品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="331"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="341"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>产品 %1 已结束（%2），但结果未写入结果数据库：%3
 记录完成前不进行任何测试。工作站会自动重试（下次 %4）；请将此产品放在一边。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
         <source>Motor not confirmed stopped</source>
         <translation>未确认电机已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10780,12 +10843,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>保存后重新上电仍会保留，电机可能像实测那样振荡或超调。按“拒绝”会写回驱动器原来的增益。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
         <source>Reject the gains</source>
         <translation>拒绝此增益</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="96"/>
         <source>Store anyway</source>
         <translation>仍要保存</translation>
     </message>
@@ -10793,22 +10856,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="52"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>无法打开伪终端：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="69"/>
+        <location filename="../sim/PtySimServer.cpp" line="112"/>
+        <source>%1 is in use by another simulator (PID %2); stop it first, or choose another path for --pty</source>
+        <translation>%1 正被另一个模拟器（PID %2）使用；请先停止它，或为 --pty 选择其他路径</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="121"/>
+        <source>cannot create the lock file %1: %2</source>
+        <translation>无法创建锁文件 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="80"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符号链接；拒绝替换</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="75"/>
+        <location filename="../sim/PtySimServer.cpp" line="83"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>无法创建符号链接 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="117"/>
+        <location filename="../sim/PtySimServer.cpp" line="162"/>
         <source>the port is plugged in: %1</source>
         <translation>端口已插入：%1</translation>
     </message>
@@ -10900,44 +10973,44 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApproveButton</name>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="16"/>
         <source>Approve…</source>
         <translation>批准…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="21"/>
         <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
         <translation>批准已保存的配方供产线使用（工程师）：有用户的工位只运行已批准的配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="43"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="65"/>
         <source>Approve recipe</source>
         <translation>批准配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
         <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
         <translation>请先保存配方：批准的是已保存文件的校验和。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="39"/>
         <source>%1 cannot be approved: %2</source>
         <translation>%1 无法批准：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="44"/>
         <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
         <translation>此工位没有用户：批准须记录批准人。请用 opentop-cli eol user add 设置用户。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="50"/>
         <source>approve %1 rev. %2</source>
         <translation>批准 %1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="66"/>
         <source>%1 rev. %2 is approved by %3: stations run it.</source>
         <translation>%1 版本 %2 已由 %3 批准：工位可运行。</translation>
     </message>
@@ -10963,170 +11036,170 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="62"/>
         <source> (for %1)</source>
         <translation> （用于 %1）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="94"/>
         <source>the recipe names no product</source>
         <translation>配方未指定产品</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="96"/>
         <source>the recipe has no revision</source>
         <translation>配方没有版本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="98"/>
         <source>the recipe names no drive</source>
         <translation>配方未指定驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="111"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1：站号 %2 已用于位置 %3；一台产品中的每台驱动器都需要各自的站号</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="133"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1：未知系列 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="139"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1：%2 的站号范围为 %3–%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="152"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1：%2 没有机型 &quot;%3&quot;；已知：%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="154"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="156"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1：机型 &quot;%2&quot; 指定了两次</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="157"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="164"/>
         <source>%1: variantProof &quot;%2&quot; is not known; use &quot;required&quot; or &quot;operator&quot; (or leave it out)</source>
         <translation>%1：variantProof“%2”无法识别；请用 &quot;required&quot; 或 &quot;operator&quot;（或省略）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="169"/>
         <source>%1: variantProof &quot;operator&quot; needs exactly one allowed variant for the operator to confirm</source>
         <translation>%1：variantProof &quot;operator&quot; 需要恰好一个允许的机型供操作员确认</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="174"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="181"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1：固件版本 &quot;%2&quot; 不是驱动器报告的版本格式（major.minor，例如 &quot;1.5&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="194"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 没有设定 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="189"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="196"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 不是配方可以写入的设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="191"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="198"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 决定驱动器的通信方式；配方不能修改它，否则工位会在运行中途失去与驱动器的连接</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: setting %2</source>
         <translation>%1：设定 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="216"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="223"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="288"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="222"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="229"/>
         <source>%1 is given twice</source>
         <translation>%1 指定了两次</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="230"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="237"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1：其允许值取决于 %2，但配方未设定该项；请将 %2 加入设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="239"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="246"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 决定 %2 的允许值；请在配方中同时设定 %2，否则驱动器可能残留一个不再有效的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="255"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="323"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="262"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="330"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1：单位为 &quot;%2&quot;，但驱动器的值以 &quot;%3&quot; 为单位</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="276"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
         <source>%1: per-unit value %2</source>
         <translation>%1：单台数值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="287"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="294"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 指定了两次（作为设定或单台数值）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="293"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="300"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1：范围的最小值 %2 大于最大值 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1：其允许值取决于 %2，但配方未设定该项</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="328"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 不是数值；单台数值需要数值型设定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="327"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="334"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1：范围 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="340"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 超出驱动器的允许范围：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="345"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="352"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 包含驱动器不允许的值；允许：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1：单台数值 %2：%3%4 超出配方的范围 %5–%6%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="382"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="389"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1：配方中没有单台数值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="392"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>配方中没有站号为 %1 的驱动器</translation>
     </message>
@@ -11139,136 +11212,136 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>配方编辑器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="61"/>
         <source>Revision:</source>
         <translation>版本：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Product:</source>
         <translation>产品：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Description:</source>
         <translation>说明：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="65"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from drives on the bus…</source>
         <translation>从总线上的驱动器新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from backup file…</source>
         <translation>从备份文件新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Open…</source>
         <translation>打开…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save</source>
         <translation>保存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save as…</source>
         <translation>另存为…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>从标准样机在总线上的驱动器或其备份文件生成配方，或打开已有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
         <source>the recipe is empty</source>
         <translation>配方为空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通过检查：可以保存和运行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 个问题：修正之前无法保存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通过检查（%n 个问题）；未保存任何内容</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1</source>
         <translation>已打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已打开 %1，但它无法按原样载入（%2）。保存时会进行检查并重新签名。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Open recipe</source>
         <translation>打开配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="326"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="336"/>
         <source>Save recipe</source>
         <translation>保存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="343"/>
         <source>Saved and signed: %1</source>
         <translation>已保存并签名：%1</translation>
     </message>
@@ -11276,12 +11349,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="268"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大于 %2 MB，超过配方文件的上限；不是配方文件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="276"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -11355,88 +11428,88 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="47"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 文件：%1，位于字节 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="51"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="52"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>不是 OpenTOP 配方文件：JSON 不是对象</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="74"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="78"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;：配方未指定驱动器</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="79"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="83"/>
         <source>%1: must be an object</source>
         <translation>%1：必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="100"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 配方文件（&quot;format&quot; 为 &quot;%1&quot;，而非 &quot;%2&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="98"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="102"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 配方文件（没有 &quot;format&quot;: &quot;%1&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必须是从 1 起的整数</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="105"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>由更新版本的 OpenTOP 写入（配方格式版本 %1）；本版本读取配方格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="111"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>配方没有校验和（&quot;checksum&quot;: &quot;sha256:…&quot;）；它不是由 OpenTOP 写入的，或写入后被修改过</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="117"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="121"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>配方在写入后被修改过（校验和不一致）；请用 OpenTOP 打开并保存以接受该修改</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="138"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;machineNumber&quot; 必须是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="136"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="213"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="140"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="217"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="181"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="185"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1（%2）：&quot;value&quot; 必须是数字或文本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="197"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="201"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1（%2）：&quot;source&quot; 必须是 &quot;csv&quot; 或 &quot;operator&quot;，而不是 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="214"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1：未知步骤类型 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="226"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="230"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1：&quot;spno&quot; 必须是运行数据编号，例如 2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="239"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="241"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1：&quot;direction&quot; 必须是 &quot;cw&quot; 或 &quot;ccw&quot;</translation>
     </message>
@@ -11461,62 +11534,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>%1：限值需要 &quot;lower&quot;、&quot;upper&quot; 或两者</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="313"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="325"/>
         <source>&quot;retest&quot; must be an object</source>
         <translation>&quot;retest&quot; 必须是对象</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="322"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="334"/>
         <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
         <translation>retest：&quot;maxAttempts&quot; 必须是 0（不限）到 100 的整数</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="332"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
         <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
         <translation>retest：&quot;passedSerial&quot; 必须是 technician、refuse 或 allow，而不是 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="356"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1：未知键 &quot;%2&quot;；允许：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; 必须是非空文本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="359"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; 必须是文本</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1：&quot;%2&quot; 必须是文本列表</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="374"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="386"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1：&quot;%2&quot; 必须是非空文本列表</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="396"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1：&quot;%2&quot; 必须是数字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="410"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="422"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; 必须是列表</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="413"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="425"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; 有 %3 个条目；最多允许 %4 个</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="419"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="431"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;：每个条目都必须是对象</translation>
     </message>
@@ -11524,141 +11597,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>该系列的所有机型，例如 dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任意固件，例如 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>最小值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>最大值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add per-unit value…</source>
         <translation>添加单台数值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add setting…</source>
         <translation>添加设定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="138"/>
         <source>Remove</source>
         <translation>移除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Settings</source>
         <translation>设定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
         <source>Per-unit values</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Test steps</source>
         <translation>测试步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Machine number:</source>
         <translation>站号：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Name:</source>
         <translation>名称：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Family:</source>
         <translation>系列：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed variants:</source>
         <translation>允许的机型：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Allowed firmware:</source>
         <translation>允许的固件：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="186"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="337"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>CSV file</source>
         <translation>CSV 文件</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="229"/>
         <source>typed by the operator</source>
         <translation>由操作员输入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="279"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a per-unit value</source>
         <translation>添加单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a setting</source>
         <translation>添加设定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="343"/>
         <source>Setting:</source>
         <translation>设定：</translation>
     </message>
@@ -12027,92 +12100,92 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>What it does</source>
         <translation>内容</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="55"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="56"/>
         <source>Add step</source>
         <translation>添加步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
         <source>Remove</source>
         <translation>删除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
         <source>Move up</source>
         <translation>上移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="63"/>
         <source>Move down</source>
         <translation>下移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
         <source>(unknown step: %1)</source>
         <translation>（未知步骤：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="215"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
         <source>No step selected</source>
         <translation>未选择步骤</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="217"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>添加步骤，或选择一个步骤进行编辑。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="222"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="223"/>
         <source>Step %1: %2</source>
         <translation>步骤 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="247"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
         <source>This step has no settings.</source>
         <translation>此步骤没有设置项。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="323"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
         <source>Parameter:</source>
         <translation>参数：</translation>
     </message>
@@ -12120,54 +12193,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::Reconnection</name>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <location filename="../ui/main/Reconnection.cpp" line="31"/>
         <source>&amp;Reconnect</source>
         <translation>重新连接(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <location filename="../ui/main/Reconnection.cpp" line="38"/>
         <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
         <translation>以相同的驱动器和页面重新打开上一次的连接（Ctrl+R）</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <location filename="../ui/main/Reconnection.cpp" line="92"/>
         <source>Reconnecting to %1…</source>
         <translation>正在重新连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <location filename="../ui/main/Reconnection.cpp" line="123"/>
         <source>Reconnected to %1: reading every drive again…</source>
         <translation>已重新连接 %1：正在重新读取所有驱动器…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <location filename="../ui/main/Reconnection.cpp" line="176"/>
         <source>Reconnected to %1.</source>
         <translation>已重新连接 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <location filename="../ui/main/Reconnection.cpp" line="200"/>
         <source>Reconnecting failed: %1</source>
         <translation>重新连接失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="217"/>
-        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <location filename="../ui/main/Reconnection.cpp" line="218"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
         <source>Connection lost</source>
         <translation>连接丢失</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="223"/>
-        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <location filename="../ui/main/Reconnection.cpp" line="226"/>
+        <location filename="../ui/main/Reconnection.cpp" line="267"/>
         <source>Reconnect</source>
         <translation>重新连接</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <location filename="../ui/main/Reconnection.cpp" line="268"/>
         <source>Go on anyway</source>
         <translation>仍然继续</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <location filename="../ui/main/Reconnection.cpp" line="269"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -12337,118 +12410,118 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="37"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>显示备份文件将对其驱动器作出的修改；使用 --yes 则写入并校验</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>仅恢复文件中的这些驱动器，例如 1,5-7。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>读取驱动器并显示计划；不写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="45"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>写入计划（不加此选项时 restore 仅显示计划）。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="54"/>
+        <location filename="../cli/RestoreCommand.cpp" line="55"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1：未读取驱动器的设定；未比较，未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="60"/>
-        <location filename="../cli/RestoreCommand.cpp" line="98"/>
+        <location filename="../cli/RestoreCommand.cpp" line="61"/>
+        <location filename="../cli/RestoreCommand.cpp" line="99"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>file value</source>
         <translation>文件值</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>device value</source>
         <translation>设备值</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>action</source>
         <translation>操作</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="81"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 项已写入并校验，%2 项未变，%3 项失败，%4 项未尝试</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="87"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 项未确认</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="88"/>
+        <location filename="../cli/RestoreCommand.cpp" line="89"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已写入 %2 条保存命令中的 %1 条</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="123"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>错误：请指定一个备份文件：restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="137"/>
+        <location filename="../cli/RestoreCommand.cpp" line="138"/>
         <source>error: --ids: %1</source>
         <translation>错误：--ids：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="142"/>
+        <location filename="../cli/RestoreCommand.cpp" line="144"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>错误：%1 中没有站号为 %2 的驱动器；其中有 %3</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="165"/>
         <source>error: %1; nothing written</source>
         <translation>错误：%1；未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="181"/>
+        <location filename="../cli/RestoreCommand.cpp" line="184"/>
         <source>error: %1: %2</source>
         <translation>错误：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="205"/>
         <source>%1: not attempted</source>
         <translation>%1：未尝试</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="234"/>
         <source>dry run: nothing written</source>
         <translation>仅预览：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="229"/>
+        <location filename="../cli/RestoreCommand.cpp" line="235"/>
         <source>nothing written; add --yes to write</source>
         <translation>未写入任何内容；加上 --yes 才会写入</translation>
     </message>
@@ -12496,161 +12569,161 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>读取驱动器并显示将要改变的内容；不写入任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>写入预览的修改，每项都通过回读校验</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>当前写入校验完成后停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>将报告保存为文本；文件名以 .csv 结尾时保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="64"/>
         <source>C&amp;lose</source>
         <translation>关闭(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="112"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="113"/>
         <source>%1: no such file</source>
         <translation>%1：文件不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="117"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
         <source>the file could not be read</source>
         <translation>无法读取该文件</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="119"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="179"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒绝，不会写入任何内容：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="123"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="124"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>文件中有 %n 台驱动器。请选择要恢复的内容，然后点击“预览”。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="145"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="146"/>
         <source>Refused, nothing written:</source>
         <translation>已拒绝，未写入任何内容：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="147"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Drive %1 from %2: %3</source>
         <translation>来自 %2 的驱动器 %1：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="177"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
         <source>Choose a backup file first.</source>
         <translation>请先选择备份文件。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="193"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="194"/>
         <source>Nothing was read or written: %1.</source>
         <translation>未读取也未写入任何数据：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Reading drive %1…</source>
         <translation>正在读取驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Writing drive %1…</source>
         <translation>正在写入驱动器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="93"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="94"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驱动器 %1：%2（%v / %m）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="228"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>正在等待当前写入校验完成后停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="243"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="324"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="329"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="244"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="325"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="330"/>
         <source>Drive %1: %2</source>
         <translation>驱动器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="246"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="247"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 项设定待写入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="253"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="254"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="256"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未写入任何内容。点击“写入驱动器”以应用。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="258"/>
         <source>Nothing written.</source>
         <translation>未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="305"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
         <source>Restore from backup file</source>
         <translation>从备份文件恢复</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="307"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 备份 (*.json);;所有文件 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="332"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="333"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>将 %n 项设定写入驱动器 %1，每项都通过回读校验？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>Write to drives</source>
         <translation>写入驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="342"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
         <source>Save restore report</source>
         <translation>保存恢复报告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="344"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文本 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="348"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="349"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -12826,62 +12899,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="17"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="18"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 项已写入并校验，%2 项未变，%3 项失败，%4 项未尝试</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="23"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 项未确认</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="25"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="26"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已写入 %2 条保存命令中的 %1 条</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 恢复报告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>File: %1</source>
         <translation>文件：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="36"/>
         <source>Date: %1 (UTC)</source>
         <translation>日期：%1（UTC）</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Written to the drives</source>
         <translation>已写入驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Preview only: nothing written</source>
         <translation>仅预览：未写入任何内容</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="41"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="42"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>来自 %2 的站号 %1：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="52"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: %2</source>
         <translation>  %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="54"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="55"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1：文件 %2，驱动器 %3：%4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="60"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="61"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
@@ -13066,148 +13139,148 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="61"/>
         <source>End-of-line results</source>
         <translation>下线检测结果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Station</source>
         <translation>工位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Time (s)</source>
         <translation>时间 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>First failure</source>
         <translation>首个不合格项</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
         <source>Export CSV…</source>
         <translation>导出 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Certificate PDF…</source>
         <translation>检验证书 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 处尚无结果数据库：工位记录第一台产品时会创建它。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="142"/>
         <source>Opening the results database %1…</source>
         <translation>正在打开结果数据库 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Results database %1</source>
         <translation>结果数据库 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="178"/>
         <source>Searching…</source>
         <translation>正在搜索…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="189"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="278"/>
         <source>the results database is not open</source>
         <translation>结果数据库未打开</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="220"/>
         <source>%1 rev. %2</source>
         <translation>%1 版本 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="224"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="239"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>%n 台产品：合格 %1，不合格 %2，工位错误 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
         <source>no unit is selected</source>
         <translation>未选择产品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
         <source>Reading unit %1…</source>
         <translation>正在读取产品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="307"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在读取该产品的记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>Export units as CSV</source>
         <translation>将产品导出为 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已将 %n 台产品写入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Save certificate</source>
         <translation>保存检验证书</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 文件 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="338"/>
         <source>Certificate written to %1</source>
         <translation>检验证书已写入 %1</translation>
     </message>
@@ -13355,62 +13428,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="49"/>
+        <location filename="../cli/RunCommand.cpp" line="50"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>试运行：启动、停止、方向、运行数据、保持/释放、速度（需要 --yes）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="54"/>
+        <location filename="../cli/RunCommand.cpp" line="55"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>发送命令（会使电机运动或停止）。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="64"/>
+        <location filename="../cli/RunCommand.cpp" line="65"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>错误：用法：%1（一个站号；负速度放在 -- 之后）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="72"/>
-        <location filename="../cli/RunCommand.cpp" line="77"/>
-        <location filename="../cli/RunCommand.cpp" line="82"/>
-        <location filename="../cli/RunCommand.cpp" line="144"/>
+        <location filename="../cli/RunCommand.cpp" line="73"/>
+        <location filename="../cli/RunCommand.cpp" line="78"/>
+        <location filename="../cli/RunCommand.cpp" line="83"/>
+        <location filename="../cli/RunCommand.cpp" line="145"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="87"/>
+        <location filename="../cli/RunCommand.cpp" line="88"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>将向站号 %1 发送：%2
 这会使电机运动或停止：加上 --yes 才会发送。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <location filename="../cli/RunCommand.cpp" line="109"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="136"/>
+        <location filename="../cli/RunCommand.cpp" line="137"/>
         <source>Sent to machine number %1: %2</source>
         <translation>已发送到站号 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="138"/>
+        <location filename="../cli/RunCommand.cpp" line="139"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>已发送到站号 %1，%2 也会执行（通信组）：%3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="174"/>
+        <location filename="../cli/RunCommand.cpp" line="175"/>
         <source>(not read: %1)</source>
         <translation>（未读取：%1）</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="183"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1:</source>
         <translation>站号 %1 的状态：</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <location filename="../cli/RunCommand.cpp" line="200"/>
         <source>Communication group of %1, read after the command:</source>
         <translation>%1 的通信组，命令后读取：</translation>
     </message>
@@ -13647,7 +13720,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/pages/RunningDataPage.cpp" line="115"/>
         <location filename="../ui/pages/RunningDataPage.cpp" line="315"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="321"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="322"/>
         <source>Initialize SPno%1</source>
         <translation>初始化 SPno%1</translation>
     </message>
@@ -13699,24 +13772,24 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>将驱动器 %2 的运行数据 SPno%1 恢复为以下出厂默认值？</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="327"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="328"/>
         <source>Initializing SPno%1…</source>
         <translation>正在初始化 SPno%1…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="342"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="343"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 未初始化：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/pages/RunningDataPage.cpp" line="358"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="359"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 已初始化；%n 个值无法回读</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="360"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="361"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 已恢复为出厂默认值</translation>
     </message>
@@ -13978,32 +14051,43 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SerialEntry</name>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="27"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>扫描或输入序列号，然后按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="29"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消本台测试（Esc）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="85"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="73"/>
+        <source>Serial number NOT taken: %1.</source>
+        <translation>序列号未被接受：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序列号 %1 未被接受：单元 %2 正在检测中。请在其判定结果显示后再扫描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="87"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="104"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="106"/>
         <source>another</source>
         <translation>另一个单元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="101"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="105"/>
+        <source>A serial number was NOT taken: %1. Unit %2 is being tested.</source>
+        <translation>序列号未被接受：%1。单元 %2 正在检测中。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="122"/>
         <source>Per-unit value</source>
         <translation>单台数值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="123"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驱动器 %1：%2（%3–%4 %5）</translation>
     </message>
@@ -14100,112 +14184,185 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialRule</name>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="65"/>
+        <source>no serial number</source>
+        <translation>无序列号</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="67"/>
+        <source>a serial number has at most %1 characters; this one has %2</source>
+        <translation>序列号最多 %1 个字符；此序列号有 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="71"/>
+        <source>a serial number may not hold control characters, format characters or line breaks; character %1 is %2</source>
+        <translation>序列号不能包含控制字符、格式字符或换行；第 %1 个字符为 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="75"/>
+        <source>serial number &quot;%1&quot; begins or ends with white space; a serial number is tested exactly as given</source>
+        <translation>序列号 &quot;%1&quot; 的开头或结尾有空白；序列号将完全按输入内容检测</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="85"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2</source>
+        <translation>序列号 &quot;%1&quot; 不符合配方的序列号格式 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="87"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2 (e.g. %3)</source>
+        <translation>序列号 &quot;%1&quot; 不符合配方的序列号格式 %2（例如 %3）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="104"/>
+        <source>&quot;serialPattern&quot; has %1 characters; at most %2 are allowed</source>
+        <translation>&quot;serialPattern&quot; 有 %1 个字符；最多允许 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="108"/>
+        <source>&quot;serialPattern&quot; may not hold control characters, format characters or line breaks (no serial number holds one); character %1 is %2</source>
+        <translation>&quot;serialPattern&quot; 不能包含控制字符、格式字符或换行（序列号不会包含这些字符）；第 %1 个字符为 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="115"/>
+        <source>&quot;serialPattern&quot; %1 is not a valid regular expression: %2 at character %3</source>
+        <translation>&quot;serialPattern&quot; %1 不是有效的正则表达式：第 %3 个字符处 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="121"/>
+        <source>&quot;serialPattern&quot; %1 cannot be matched against a whole serial number</source>
+        <translation>&quot;serialPattern&quot; %1 无法与整个序列号匹配</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="127"/>
+        <source>&quot;serialExample&quot; needs a &quot;serialPattern&quot; that it matches</source>
+        <translation>&quot;serialExample&quot; 需要一个与其匹配的 &quot;serialPattern&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="130"/>
+        <source>&quot;serialExample&quot;: %1</source>
+        <translation>&quot;serialExample&quot;：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="140"/>
+        <source>any, at most %1 characters</source>
+        <translation>任意，最多 %1 个字符</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="143"/>
+        <source>%1 (e.g. %2)</source>
+        <translation>%1（例如 %2）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="42"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>按名称写入参数，经过验证、回读和校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="52"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>按地址写入寄存器：ADDR=VALUE（可重复；配合 --fc 16 时可写 VALUE,VALUE...）。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 写入的功能码：6（默认）或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="63"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>错误：用法：set ID NAME=VALUE...（例如 set 1 spno2.accel=2.5），或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="75"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>错误：&quot;%1&quot; 不是 NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="82"/>
-        <location filename="../cli/SetCommand.cpp" line="91"/>
-        <location filename="../cli/SetCommand.cpp" line="106"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="92"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
-        <location filename="../cli/SetCommand.cpp" line="114"/>
+        <location filename="../cli/SetCommand.cpp" line="105"/>
+        <location filename="../cli/SetCommand.cpp" line="117"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>确认会使电机运动、复位、清除、初始化或保存的命令，以及串口配置锁定的设定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="146"/>
+        <location filename="../cli/SetCommand.cpp" line="149"/>
         <source>next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ...（出厂通信设定）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="199"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written, verified</source>
         <translation>已写入，已校验</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="201"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>written, not verified: %1</source>
         <translation>已写入，未确认：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="202"/>
+        <location filename="../cli/SetCommand.cpp" line="205"/>
         <source>written (command, not readable)</source>
         <translation>已写入（命令，不可读）</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="204"/>
+        <location filename="../cli/SetCommand.cpp" line="207"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未确认（%1）：驱动器可能保存了该值，也可能没有；可用 &quot;get&quot; 回读</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="215"/>
+        <location filename="../cli/SetCommand.cpp" line="218"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="222"/>
+        <location filename="../cli/SetCommand.cpp" line="225"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注意：驱动器从下次上电起使用 %1：请将驱动器断电再上电，然后用新设定（--baud、--parity）连接</translation>
     </message>
@@ -14416,17 +14573,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim：--defect %1（%2@%1）：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="176"/>
+        <location filename="../sim/SimApp.cpp" line="177"/>
         <source>the port is unplugged already</source>
         <translation>端口已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="178"/>
+        <location filename="../sim/SimApp.cpp" line="179"/>
         <source>unplugged</source>
         <translation>已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="211"/>
+        <location filename="../sim/SimApp.cpp" line="212"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -15280,64 +15437,64 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="22"/>
+        <location filename="../ui/eol/StationActions.cpp" line="24"/>
         <source>Reset alarm and test again</source>
         <translation>复位报警并重新测试</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="23"/>
+        <location filename="../ui/eol/StationActions.cpp" line="25"/>
         <source>Technician: test again…</source>
         <translation>技术员：重新测试…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <location filename="../ui/eol/StationActions.cpp" line="50"/>
         <source>A technician may allow unit %1 to be tested again.</source>
         <translation>技术员可允许单元 %1 重新测试。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="54"/>
+        <location filename="../ui/eol/StationActions.cpp" line="57"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>正在复位站号 %1 的报警…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="63"/>
+        <location filename="../ui/eol/StationActions.cpp" line="66"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>报警未清除；未开始任何测试：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="73"/>
+        <location filename="../ui/eol/StationActions.cpp" line="76"/>
         <source>reset the alarm</source>
         <translation>报警复位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="79"/>
+        <location filename="../ui/eol/StationActions.cpp" line="82"/>
         <source>serial %1</source>
         <translation>序列号 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="88"/>
+        <location filename="../ui/eol/StationActions.cpp" line="91"/>
         <source>test serial %1 again</source>
         <translation>重新测试序列号 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="102"/>
+        <location filename="../ui/eol/StationActions.cpp" line="105"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>测试前站号 %1 上已有报警：未写入任何内容。请复位报警（使用驱动器自身的复位功能；需要重新上电的报警会另行提示），产品随即重新测试。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="131"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>(no name)</source>
         <translation>（未填姓名）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="136"/>
         <source>Test again</source>
         <translation>重新测试</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="134"/>
+        <location filename="../ui/eol/StationActions.cpp" line="137"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -15372,22 +15529,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationFigures</name>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="25"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="27"/>
         <source>This shift: no figures yet (%1)</source>
         <translation>本班次：暂无数据（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="26"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="28"/>
         <source>results database not read</source>
         <translation>尚未读取结果数据库</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="29"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="31"/>
         <source>This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5</source>
         <translation>本班次：已测 %1 · 合格 %2 · 不合格 %3 · 工位错误 %4 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="35"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="39"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>本工位、此配方版本，自 %1 起（读取于 %2）。用命令查看相同数据：%3</translation>
     </message>
@@ -15395,52 +15552,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
         <source>Operator:</source>
         <translation>操作员:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>user name</source>
         <translation>用户名</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
         <source>password</source>
         <translation>密码</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
         <source>Log in</source>
         <translation>登录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
         <source>Log in:</source>
         <translation>登录:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
         <source>Log out</source>
         <translation>注销</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
         <source>Not logged in: %1</source>
         <translation>未登录：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>已登录：&lt;b&gt;%1&lt;/b&gt;（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>尚未设置用户：任何人都可运行、编辑和退出；请用 opentop-cli eol user add 设置用户</translation>
     </message>
@@ -15448,24 +15605,24 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationNotice</name>
     <message numerus="yes">
-        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="31"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 条结果，尚未存入结果数据库：%1。数据库响应后会按顺序自动发送。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="35"/>
         <source>it does not answer</source>
         <translation>数据库没有响应</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="38"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>单元 %1（开始于 %2）未完成：工作站在检测中停止。已记录为“中断”，请重新检测。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="44"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驱动器进入安全状态：逐一读取、停止仍在运转者、将控制权交还其输入端子…</translation>
     </message>
@@ -15965,7 +16122,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="36"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>无法在 %1:%2 上监听：%3</translation>
     </message>
@@ -16026,7 +16183,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>&lt;b&gt;站号 %1 的试运行&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="53"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="54"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>站号 %1 尚未识别为已知系列的驱动器；试运行需要已识别的驱动器。</translation>
     </message>
@@ -16076,42 +16233,42 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>将运行、停止、方向和速度选择交还给驱动器的输入端子</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="160"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="161"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>无法读取 %1 以确认驱动器是否接受运动命令：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="196"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="197"/>
         <source>Not started: the variant of %1 was not given.</source>
         <translation>未启动：未指定 %1 的机型。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="203"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="204"/>
         <source>Reading what the start will run…</source>
         <translation>正在读取启动后将运行的内容…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="219"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="220"/>
         <source>Start the motor</source>
         <translation>启动电机</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="233"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="234"/>
         <source>Sending %1…</source>
         <translation>正在发送 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="262"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="263"/>
         <source>Not every drive of its communication group runs: see below.</source>
         <translation>通信组中并非所有驱动器都在运行：见下方。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="280"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="281"/>
         <source>Sent: %1</source>
         <translation>已发送：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="349"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="350"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>轮询已暂停：控制器在收到最后一帧报文 %1 s 后会使电机制动（%2）。请恢复轮询以保持电机运行。</translation>
     </message>
@@ -16196,7 +16353,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Pause</source>
         <translation>暂停(&amp;P)</translation>
     </message>
@@ -16251,17 +16408,17 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>帧数</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Drive</source>
         <translation>驱动器</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Requests</source>
         <translation>请求</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Replies</source>
         <translation>应答</translation>
     </message>
@@ -16276,7 +16433,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 错误</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Exceptions</source>
         <translation>异常</translation>
     </message>
@@ -16292,6 +16449,11 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
+        <source>Late replies</source>
+        <translation>迟到应答</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
@@ -16301,44 +16463,49 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>各驱动器统计</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="119"/>
+        <source>Frames that answered nothing asked at the time: a reply to an earlier request that came too late, discarded and never taken as a value</source>
+        <translation>不是对当时请求的应答的帧：之前请求的应答迟到，已丢弃，从未当作数值使用</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Resume</source>
         <translation>继续(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="320"/>
         <source>Broadcast</source>
         <translation>广播</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
         <source>Drive %1</source>
         <translation>驱动器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="309"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 个地址未应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="311"/>
         <source>No reply from machine numbers %1</source>
         <translation>站号 %1 无应答</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="357"/>
         <source>Save traffic log</source>
         <translation>保存报文日志</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
         <source>Text files (*.txt)</source>
         <translation>文本文件 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="358"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -16461,51 +16628,56 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未打开</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
         <source>send failed</source>
         <translation>发送失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之后又收到一个应答：这个应答可能是对之前请求的应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>驱动器自己的通信格式需要串口；Modbus TCP 网关自行设定它的线路</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>无法把线路切换到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
+        <translation>%1 ms 内无应答（之前请求的迟到应答已丢弃）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>来自从站 %1 的应答，预期为 %2</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="158"/>
+        <location filename="../transport/RtuBackend.cpp" line="178"/>
         <location filename="../transport/TcpBackend.cpp" line="107"/>
         <source>reply incomplete</source>
         <translation>应答不完整</translation>
@@ -16517,24 +16689,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
-        <location filename="../transport/RtuBackend.cpp" line="165"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
+        <translation>已丢弃迟到应答：请求后 %1 ms 即接收完毕，而应答在线路上至少需要 %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
         <source> (connection closed)</source>
         <translation> （连接已关闭）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
         <source>stale bytes discarded before sending</source>
         <translation>发送前丢弃了残留字节</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
         <source>late bytes discarded after an error</source>
         <translation>出错后丢弃了迟到的字节</translation>
     </message>
@@ -16815,7 +16992,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%1 正被 %2（PID %3）占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="95"/>
+        <location filename="../transport/RtuBackend.cpp" line="115"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -16824,17 +17001,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然后注销并重新登录（该组仅对新会话生效）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="101"/>
+        <location filename="../transport/RtuBackend.cpp" line="121"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> （设备可能不支持该校验位；pty 需要 N）</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="136"/>
+        <location filename="../transport/RtuBackend.cpp" line="156"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>应答声明 %1 字节，超过 RTU 帧的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="157"/>
+        <location filename="../transport/RtuBackend.cpp" line="177"/>
         <source>no reply</source>
         <translation>无应答</translation>
     </message>
@@ -17115,12 +17292,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>seconds</source>
         <translation>秒</translation>
     </message>
@@ -17290,278 +17467,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="81"/>
+        <location filename="../cli/TuneCommand.cpp" line="82"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>直流控制器的速度环阶跃测试和继电器自整定（需要 --yes）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>Run the test (it moves the motor).</source>
         <translation>执行测试（会使电机运动）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step：阶跃前的速度（默认 0）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <location filename="../cli/TuneCommand.cpp" line="89"/>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: speed after the step.</source>
         <translation>step：阶跃后的速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step：阶跃后记录的时长（默认 1500）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune：继电器测试的运行速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune：输出摆幅，以满输出的 % 表示（默认 10）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="94"/>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune：soft、medium（默认）、stiff、tyreus-luyben 或 zn-pi。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="97"/>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune：写入建议增益，然后执行从运行速度的一半到运行速度的阶跃测试。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
         <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
         <translation>autotune：配合 --accept 时，若用此增益测得的阶跃通过检查，便将增益保存到驱动器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="104"/>
         <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
         <translation>autotune：配合 --accept 时，即使测得的阶跃未通过检查也保留增益（配合 --store 则保存）；不指定时会写回驱动器原来的增益。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>速度超过此值时立即停止（默认为测试最高速度的 120 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="107"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>电流超过此值（A）时立即停止（默认 20）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="108"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>Write the samples to FILE.</source>
         <translation>将采样数据写入 FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="123"/>
+        <location filename="../cli/TuneCommand.cpp" line="124"/>
         <source>error: usage: %1</source>
         <translation>错误：用法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="133"/>
+        <location filename="../cli/TuneCommand.cpp" line="134"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>错误：--%1 必须是不小于 0 的数，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="155"/>
-        <location filename="../cli/TuneCommand.cpp" line="166"/>
-        <location filename="../cli/TuneCommand.cpp" line="171"/>
-        <location filename="../cli/TuneCommand.cpp" line="374"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="167"/>
+        <location filename="../cli/TuneCommand.cpp" line="172"/>
+        <location filename="../cli/TuneCommand.cpp" line="375"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>step needs --to SPEED</source>
         <translation>step 需要 --to SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="157"/>
+        <location filename="../cli/TuneCommand.cpp" line="158"/>
         <source>--rule must be one of %1</source>
         <translation>--rule 必须是 %1 之一</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="159"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune 需要 --speed SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="175"/>
+        <location filename="../cli/TuneCommand.cpp" line="176"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>将使站号 %1 的电机从 %2 运行到 %3，并记录阶跃响应。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="181"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>将使站号 %1 的电机在 %2 附近进行继电器测试（输出 ±%3 %）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="186"/>
+        <location filename="../cli/TuneCommand.cpp" line="187"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>这会使电机运动：加上 --yes 才会执行。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="236"/>
         <source>Machine number %1, gains %2</source>
         <translation>站号 %1，增益 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="237"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  上升时间（10–90 %）：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="238"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  overshoot: %1 %</source>
         <translation>  超调：%1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="239"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  settling time (2 %): %1</source>
         <translation>  调节时间（2 %）：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="240"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  稳态误差：%1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="241"/>
+        <location filename="../cli/TuneCommand.cpp" line="242"/>
         <source>  peak current: %1 A</source>
         <translation>  峰值电流：%1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="267"/>
+        <location filename="../cli/TuneCommand.cpp" line="268"/>
         <source>Step %1 → %2 %3:</source>
         <translation>阶跃 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <location filename="../cli/TuneCommand.cpp" line="273"/>
         <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
         <translation>继电器测试：Ku %1，实测 Tu %2 ms（幅值 ±%3 %4，%5 个周期，每周期读取 %6 次，每 %7 ms 一次）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <location filename="../cli/TuneCommand.cpp" line="365"/>
         <source>What to change: %1</source>
         <translation>应更改的项目：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="282"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>模型：增益 %1，时间常数 %2 ms，纯滞后时间 %3 ms（已扣除总线的 %4 ms）</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="288"/>
         <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
         <translation>模型上驱动器自身的环路：Ku %1，Tu %2 ms</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="290"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
         <source>Proposed (%1): %2</source>
         <translation>建议值（%1）：%2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <location filename="../cli/TuneCommand.cpp" line="292"/>
         <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
         <translation>  规则的 P × %1，Ti × %2；预测阶跃 %3 → %4 %5：超调 %6 %，调节时间 %7</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="307"/>
+        <location filename="../cli/TuneCommand.cpp" line="308"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>写入建议增益失败：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="310"/>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
         <source>Proposed gains written (not stored).</source>
         <translation>已写入建议增益（未保存）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="313"/>
+        <location filename="../cli/TuneCommand.cpp" line="314"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>用该增益测得的阶跃 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <location filename="../cli/TuneCommand.cpp" line="322"/>
         <source>interrupted</source>
         <translation>已中断</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
         <source>Check after Accept: passed. %1</source>
         <translation>接受后的检查：通过。%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <location filename="../cli/TuneCommand.cpp" line="326"/>
         <source>Check after Accept: FAILED. %1</source>
         <translation>接受后的检查：未通过。%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <location filename="../cli/TuneCommand.cpp" line="335"/>
         <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
         <translation>已写回原来的增益（%1）；未保存任何内容。加上 --override-check 仍会保留建议值（配合 --store 则保存）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <location filename="../cli/TuneCommand.cpp" line="339"/>
         <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
         <translation>写回原来的增益失败：%1；建议值仍在驱动器中（未保存）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <location filename="../cli/TuneCommand.cpp" line="346"/>
         <source>Storing although the check failed (--override-check).</source>
         <translation>检查未通过，仍予保存（--override-check）。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="354"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Gains stored in the drive.</source>
         <translation>增益已保存到驱动器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="355"/>
+        <location filename="../cli/TuneCommand.cpp" line="356"/>
         <source>Storing the gains failed: %1</source>
         <translation>保存增益失败：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="362"/>
+        <location filename="../cli/TuneCommand.cpp" line="363"/>
         <source>Test ended: %1</source>
         <translation>测试结束：%1</translation>
     </message>
@@ -18127,32 +18304,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitLog</name>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Serial</source>
         <translation>序列号</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未记录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="34"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
@@ -18211,97 +18388,97 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="71"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="74"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 文件大于 %1 MB</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="73"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="76"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>不是 CSV 文本文件（含有 NUL 字节）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="94"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>第 %1 行：带引号的字段未正确结束</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="98"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>第 %1 行：表头必须以 &quot;serial&quot; 开头，而不是 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="102"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="105"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>第 %1 行：表头中没有单台数值</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="104"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: more than %2 columns</source>
         <translation>第 %1 行：超过 %2 列</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="108"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="111"/>
         <source>line %1: column %2 has no name</source>
         <translation>第 %1 行：第 %2 列没有名称</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="110"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="113"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>第 %1 行：列 &quot;%2&quot; 出现了两次</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="119"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="122"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>第 %1 行：%2 个字段，但表头有 %3 个</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="125"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="128"/>
         <source>line %1: no serial number</source>
         <translation>第 %1 行：没有序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="127"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="130"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>第 %1 行：序列号 &quot;%2&quot; 已在第 %3 行出现</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="134"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="137"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 文件为空；需要表头 &quot;serial,&lt;parameter&gt;,...&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="148"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="151"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="189"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="193"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>序列号 &quot;%1&quot; 不在 CSV 文件中</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="202"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1：列 &quot;%2&quot; 有歧义，多个位置都有该单台数值；请将列命名为 &quot;%3:%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="210"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1：CSV 文件中没有该单台数值的列 &quot;%2&quot;（或 &quot;%3:%2&quot;）</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="211"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="215"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>第 %1 行，列 &quot;%2&quot;：序列号 &quot;%3&quot; 没有值</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="220"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>第 %1 行，列 &quot;%2&quot;：&quot;%3&quot; 不是数字</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="231"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -18663,12 +18840,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>这是哪种驱动器？</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="41"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="42"/>
         <source>Not known: check against every variant</source>
         <translation>不确定：按所有机型检查</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="65"/>
         <source>the variant of %1 was not given</source>
         <translation>未指定 %1 的机型</translation>
     </message>

@@ -86,107 +86,107 @@
 <context>
     <name>opentop</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="70"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="71"/>
         <source>not read</source>
         <translation>未讀取</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="90"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="91"/>
         <source>No alarm is active.</source>
         <translation>目前無警報。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="92"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="93"/>
         <source>Alarm active: %1 %2.</source>
         <translation>警報發生中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="95"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="96"/>
         <source>An alarm is active.</source>
         <translation>有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="98"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="99"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)：Alarm-Reset 無法解除任何警報。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="105"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="106"/>
         <source>%1: could not be read: %2</source>
         <translation>%1：無法讀取：%2</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="109"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="110"/>
         <source>%1: no records.</source>
         <translation>%1：無記錄。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="112"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="113"/>
         <source>%1: %2 of %3 records, newest first</source>
         <translation>%1：共 %3 筆記錄中的 %2 筆，最新的在前</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Code</source>
         <translation>代碼</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Panel</source>
         <translation>面板</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="117"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="118"/>
         <source>Cleared by</source>
         <translation>解除方式</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="124"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="125"/>
         <source>unknown code</source>
         <translation>未知代碼</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="131"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="132"/>
         <source>Cause: %1</source>
         <translation>原因：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="133"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="134"/>
         <source>Remedy: %1</source>
         <translation>對策：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="135"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="136"/>
         <source>To clear: %1</source>
         <translation>解除方法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="141"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="142"/>
         <source>Communication error register (%1): could not be read.</source>
         <translation>通訊錯誤暫存器 (%1)：無法讀取。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="145"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="146"/>
         <source>Communication error register (%1): none (0).</source>
         <translation>通訊錯誤暫存器 (%1)：無 (0)。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="148"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="149"/>
         <source>Communication error register (%1): %2, not a known code.</source>
         <translation>通訊錯誤暫存器 (%1)：%2，非已知代碼。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="152"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="153"/>
         <source>Communication error register (%1): %2 %3
   Cause: %4
   Remedy: %5</source>
@@ -195,57 +195,57 @@
   對策：%5</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="26"/>
+        <location filename="../cli/CliApp.cpp" line="27"/>
         <source>Machine-readable JSON on standard output.</source>
         <translation>在標準輸出上輸出機器可讀的 JSON。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="27"/>
+        <location filename="../cli/CliApp.cpp" line="28"/>
         <source>Print every frame sent and received on standard error.</source>
         <translation>在標準錯誤輸出上印出每個收發的訊框。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="29"/>
+        <location filename="../cli/CliApp.cpp" line="30"/>
         <source>Drive variant where the drive does not report it: VARIANT, or ID=VARIANT,... (e.g. dbu400, 150=dbu400).</source>
         <translation>驅動器未回報機型時使用的機型：VARIANT，或 ID=VARIANT,... (例如 dbu400, 150=dbu400)。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="31"/>
+        <location filename="../cli/CliApp.cpp" line="32"/>
         <source>VARIANT</source>
         <translation>VARIANT</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="33"/>
+        <location filename="../cli/CliApp.cpp" line="34"/>
         <source>The drives on the bus, e.g. 1,3,5-7 (default: OPENTOP_BUS_DRIVES, else the drives the last scan of this connection found): before a write or command, their communication group is read to name every drive it also reaches.</source>
         <translation>匯流排上的驅動器，例如 1,3,5-7 (預設：OPENTOP_BUS_DRIVES，否則為此連線上次掃描找到的驅動器)：寫入或下指令前會讀取其通訊群組，以列出指令同時送達的每台驅動器。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="36"/>
+        <location filename="../cli/CliApp.cpp" line="37"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="38"/>
+        <location filename="../cli/CliApp.cpp" line="39"/>
         <source>Write or command a drive that can be a communication group parent although the drives on the bus are not known (no --bus-drives and no scan of this connection): drives in its group execute it too, unnamed.</source>
         <translation>即使不知道匯流排上有哪些驅動器 (沒有 --bus-drives，此連線也未曾掃描)，仍寫入或下指令給可能為通訊群組主站的驅動器：其群組內的驅動器也會執行，且不會列出。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="42"/>
+        <location filename="../cli/CliApp.cpp" line="43"/>
         <source>Show this help, or a command&apos;s help after the command.</source>
         <translation>顯示此說明；放在指令之後則顯示該指令的說明。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="43"/>
+        <location filename="../cli/CliApp.cpp" line="44"/>
         <source>Show the version.</source>
         <translation>顯示版本。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="47"/>
+        <location filename="../cli/CliApp.cpp" line="48"/>
         <source>Language of the human output: en, zh_TW, zh_CN, ko, ja (default: the system&apos;s). --json output is the same in every language.</source>
         <translation>供人閱讀之輸出的語言：en、zh_TW、zh_CN、ko、ja（預設：系統語言）。--json 輸出在各語言中都相同。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="49"/>
+        <location filename="../cli/CliApp.cpp" line="50"/>
         <source>CODE</source>
         <translation>CODE</translation>
     </message>
@@ -410,19 +410,29 @@
         <translation> 及另外 %1 個</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="27"/>
+        <location filename="../cli/TuneCommand.cpp" line="28"/>
         <source>not reached</source>
         <translation>未達到</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="34"/>
+        <location filename="../cli/SetCommand.cpp" line="35"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="35"/>
+        <location filename="../cli/SetCommand.cpp" line="36"/>
         <source>nothing was written</source>
         <translation>未寫入任何資料</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="60"/>
+        <source>NOT RECORDED (%1)</source>
+        <translation>未記錄（%1）</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunOutput.cpp" line="62"/>
+        <source>%1 (kept on this station)</source>
+        <translation>%1（保存在本工作站）</translation>
     </message>
 </context>
 <context>
@@ -689,89 +699,89 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Kind</source>
         <translation>類別</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Record</source>
         <translation>記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Code</source>
         <translation>代碼</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="46"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
         <source>Machine name</source>
         <translation>機器名稱</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Panel code</source>
         <translation>面板代碼</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cleared by</source>
         <translation>解除方式</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="47"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
         <source>Remedy</source>
         <translation>對策</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="50"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="54"/>
         <source>alarm</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="51"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="55"/>
         <source>warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="59"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="63"/>
         <source>unknown code</source>
         <translation>未知代碼</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="105"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="109"/>
         <source>machine %1: %2</source>
         <translation>機號 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/alarms/AlarmExport.cpp" line="128"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="132"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>已將 %1 台驅動器的 %n 筆記錄寫入 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmExport.cpp" line="133"/>
+        <location filename="../ui/alarms/AlarmExport.cpp" line="137"/>
         <source>Not everything could be read: %1</source>
         <translation>部分資料無法讀取：%1</translation>
     </message>
@@ -974,92 +984,92 @@ Remedy: %5</source>
 <context>
     <name>opentop::AlarmsCommand</name>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="164"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="165"/>
         <source>Show alarm and warning histories with causes and remedies; reset, erase</source>
         <translation>顯示警報與警告記錄及其原因與對策；重置、清除</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="171"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="172"/>
         <source>Send the alarm reset command, then tell whether the alarm is cleared or needs a power cycle (needs --yes; exit 4 when it stays active).</source>
         <translation>送出警報重置指令，並告知警報是否已解除或需斷電重新上電 (需要 --yes；警報仍存在時結束碼為 4)。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="173"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
         <source>Erase the alarm and warning records (needs --yes).</source>
         <translation>清除警報與警告記錄 (需要 --yes)。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="174"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="175"/>
         <source>Confirm --reset and --clear-records.</source>
         <translation>確認 --reset 與 --clear-records。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="185"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="186"/>
         <source>error: usage: %1 (one machine number)</source>
         <translation>錯誤：用法：%1 (一個機號)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="193"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="194"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="199"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="200"/>
         <source>error: machine number %1 (%2) keeps no alarm or warning records</source>
         <translation>錯誤：機號 %1 (%2) 不保存警報或警告記錄</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="206"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="207"/>
         <source>error: %1 drives have no %2 command</source>
         <translation>錯誤：%1 驅動器沒有%2指令</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>alarm reset</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="208"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="209"/>
         <source>record erase</source>
         <translation>記錄清除</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="219"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="220"/>
         <source>These change machine number %1; add --yes to send them:</source>
         <translation>以下指令將作用於機號 %1；加上 --yes 才會送出：</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="223"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="224"/>
         <source>— clears the active alarm if its cause is gone and it is not one that only a power cycle clears</source>
         <translation>— 若原因已排除，且不屬於僅能斷電重新上電解除的警報，即解除發生中的警報</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="248"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="249"/>
         <source>Machine number %1 (%2)</source>
         <translation>機號 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="276"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="277"/>
         <source>Alarm reset: %1</source>
         <translation>警報重置：%1</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="299"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="300"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1 (%2 筆記錄)；%3</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="302"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
         <source>read back empty.</source>
         <translation>回讀為空。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="303"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="304"/>
         <source>NOT empty when read back.</source>
         <translation>回讀結果「不是」空的。</translation>
     </message>
     <message>
-        <location filename="../cli/AlarmsCommand.cpp" line="306"/>
+        <location filename="../cli/AlarmsCommand.cpp" line="307"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
     </message>
@@ -1087,153 +1097,153 @@ Remedy: %5</source>
         <translation>機號 %1 (%2) 的警報與警告</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="66"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="67"/>
         <source>Send the alarm reset command; tells whether the alarm is cleared or only a power cycle clears it</source>
         <translation>送出警報重置指令，並告知警報是否已解除或只能斷電重新上電解除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="68"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="69"/>
         <source>Erase the alarm and warning records kept by the drive</source>
         <translation>清除驅動器保存的警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="74"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="75"/>
         <source>This drive keeps no alarm or warning records.</source>
         <translation>此驅動器不保存警報或警告記錄。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="104"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="105"/>
         <source>Alarm state: %1</source>
         <translation>警報狀態：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="186"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="187"/>
         <source>Reading the records…</source>
         <translation>正在讀取記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="202"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="203"/>
         <source>No alarm is active.</source>
         <translation>目前無警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="204"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="205"/>
         <source>Alarm active: %1 %2.</source>
         <translation>警報發生中：%1 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="206"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="207"/>
         <source>An alarm is active.</source>
         <translation>有警報發生中。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="209"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="210"/>
         <source>This drive is set to clear alarms by a power restart only (%1): Alarm-Reset clears none of them.</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)：Alarm-Reset 無法解除任何警報。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="213"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="214"/>
         <source>Could not be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="250"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="252"/>
         <source>Writes: %1</source>
         <translation>寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="251"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="253"/>
         <source>This clears the active alarm if its cause is gone. Some alarms are cleared only by a power cycle; the result tells.</source>
         <translation>若原因已排除，即可解除發生中的警報。部分警報只能斷電重新上電解除；結果會顯示是哪一種。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="254"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <source>This drive is set to clear alarms by a power restart only (%1).</source>
         <translation>此驅動器設定為僅能斷電重新上電解除警報 (%1)。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="256"/>
         <location filename="../ui/alarms/AlarmsPage.cpp" line="258"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="260"/>
         <source>Reset alarm</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="257"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="259"/>
         <source>Send the alarm reset command to machine %1?</source>
         <translation>要對機號 %1 送出警報重置指令嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="265"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="267"/>
         <source>Sending the alarm reset…</source>
         <translation>正在送出警報重置…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="271"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="273"/>
         <source>Alarm reset: %1</source>
         <translation>警報重置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="274"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="276"/>
         <source>Turn the drive&apos;s power off, wait 5 s and turn it on again.</source>
         <translation>請關閉驅動器電源，等待 5 s 後再開啟。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="285"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
         <source>%1 (%2 records)</source>
         <translation>%1 (%2 筆記錄)</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="287"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
         <source>the alarm and warning records</source>
         <translation>警報與警告記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="289"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
         <source>Clear records</source>
         <translation>清除記錄</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source>Erase %1 of machine %2?</source>
         <translation>要清除機號 %2 的%1嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="290"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="292"/>
         <source> and </source>
         <translation> 與 </translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="291"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
         <source>The records cannot be restored. Writes: %1</source>
         <translation>記錄清除後無法復原。寫入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="293"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="295"/>
         <source>Erase</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="300"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="302"/>
         <source>Erasing the records…</source>
         <translation>正在清除記錄…</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="308"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="310"/>
         <source>Erased: %1 (%2 records); %3</source>
         <translation>已清除：%1 (%2 筆記錄)；%3</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="311"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="313"/>
         <source>read back empty.</source>
         <translation>回讀為空。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="312"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
         <source>NOT empty when read back.</source>
         <translation>回讀結果「不是」空的。</translation>
     </message>
     <message>
-        <location filename="../ui/alarms/AlarmsPage.cpp" line="314"/>
+        <location filename="../ui/alarms/AlarmsPage.cpp" line="316"/>
         <source>Erasing failed: %1</source>
         <translation>清除失敗：%1</translation>
     </message>
@@ -1395,95 +1405,95 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupCommand</name>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="36"/>
+        <location filename="../cli/BackupCommand.cpp" line="37"/>
         <source>Save every setting of drives to a backup file (written only when all were read)</source>
         <translation>將驅動器的所有設定儲存至備份檔 (全部讀取成功才寫入)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="42"/>
+        <location filename="../cli/BackupCommand.cpp" line="43"/>
         <source>The backup file to write (replaced atomically).</source>
         <translation>要寫入的備份檔 (整個檔案一次取代)。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="43"/>
+        <location filename="../cli/BackupCommand.cpp" line="44"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="45"/>
+        <location filename="../cli/BackupCommand.cpp" line="46"/>
         <source>Every drive the connection knows (a simulated bus), or every drive a scan finds.</source>
         <translation>連線已知的所有驅動器 (模擬匯流排)，或掃描找到的所有驅動器。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="53"/>
+        <location filename="../cli/BackupCommand.cpp" line="54"/>
         <source>error: name the machine numbers, or give --all: backup ID... -o FILE</source>
         <translation>錯誤：請指定機號，或使用 --all：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="62"/>
-        <location filename="../cli/BackupCommand.cpp" line="243"/>
-        <location filename="../cli/BackupCommand.cpp" line="249"/>
+        <location filename="../cli/BackupCommand.cpp" line="63"/>
+        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="251"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="71"/>
+        <location filename="../cli/BackupCommand.cpp" line="72"/>
         <source>scanning the bus for drives…</source>
         <translation>正在掃描匯流排上的驅動器…</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="86"/>
+        <location filename="../cli/BackupCommand.cpp" line="87"/>
         <source>warning: machine number %1 answered, but its identification failed: it is not backed up; name it to try again (backup %1 -o FILE).</source>
         <translation>警告：機號 %1 有回應，但識別失敗：未備份它；請指定這個機號再試一次 (backup %1 -o FILE)。</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="107"/>
+        <location filename="../cli/BackupCommand.cpp" line="108"/>
         <source>error: the port %1 was lost while reading %2 (%3)</source>
         <translation>錯誤：讀取 %2 時連接埠 %1 中斷 (%3)</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="110"/>
-        <location filename="../cli/BackupCommand.cpp" line="245"/>
+        <location filename="../cli/BackupCommand.cpp" line="112"/>
+        <location filename="../cli/BackupCommand.cpp" line="247"/>
         <source>nothing written to %1</source>
         <translation>未寫入任何資料至 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="118"/>
+        <location filename="../cli/BackupCommand.cpp" line="120"/>
         <source>error: give the file to write: backup ID... -o FILE</source>
         <translation>錯誤：請指定要寫入的檔案：backup ID... -o FILE</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="122"/>
+        <location filename="../cli/BackupCommand.cpp" line="124"/>
         <source>error: %1; nothing read</source>
         <translation>錯誤：%1；未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="134"/>
+        <location filename="../cli/BackupCommand.cpp" line="136"/>
         <source>interrupted: nothing written</source>
         <translation>已中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="138"/>
+        <location filename="../cli/BackupCommand.cpp" line="140"/>
         <source>error: no drive answers on %1; nothing written</source>
         <translation>錯誤：%1 上沒有驅動器回應；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="164"/>
+        <location filename="../cli/BackupCommand.cpp" line="166"/>
         <source>machine number %1</source>
         <translation>機號 %1</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="224"/>
+        <location filename="../cli/BackupCommand.cpp" line="226"/>
         <source>interrupted while reading machine number %1: nothing written</source>
         <translation>讀取機號 %1 時中斷：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="186"/>
+        <location filename="../cli/BackupCommand.cpp" line="188"/>
         <source>%1: %2 settings read in %3 requests, %4 ms</source>
         <translation>%1：以 %3 次請求讀取 %2 項設定，%4 ms</translation>
     </message>
     <message>
-        <location filename="../cli/BackupCommand.cpp" line="194"/>
+        <location filename="../cli/BackupCommand.cpp" line="196"/>
         <source>%1: reading failed, %2 of %3 settings read (%4 requests, %5 ms)</source>
         <translation>%1：讀取失敗，已讀取 %3 項設定中的 %2 項 (%4 次請求，%5 ms)</translation>
     </message>
@@ -1531,44 +1541,44 @@ Remedy: %5</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="53"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="54"/>
         <source>Save only the drives that were read; the others are left out</source>
         <translation>僅儲存已讀取的驅動器；其餘略過</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="55"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="56"/>
         <source>Stop after the drive being read</source>
         <translation>讀完目前這台驅動器後停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="83"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="84"/>
         <source>Nothing was read: %1.</source>
         <translation>未讀取任何資料：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="106"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="107"/>
         <source>Waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="110"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
         <source>%v of %m drives</source>
         <translation>%v / %m 台驅動器</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="111"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="112"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>正在讀取 %n 台驅動器的設定…</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="122"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="123"/>
         <source>Stopping after the drive being read…</source>
         <translation>讀完目前這台驅動器後將停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="160"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="161"/>
         <source>Not read (cancelled)</source>
         <translation>未讀取 (已取消)</translation>
     </message>
@@ -1578,58 +1588,58 @@ Remedy: %5</source>
         <translation>驅動器 %1：無法識別，未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="165"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
         <source>Not identified</source>
         <translation>無法識別</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="138"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="139"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="153"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>於 %1 ms 內讀取 %n 項設定</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="166"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
         <source>Value not allowed</source>
         <translation>不允許的值</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="167"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="168"/>
         <source>Read failed</source>
         <translation>讀取失敗</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="183"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="184"/>
         <source>Not read: drive(s) %1. Nothing has been saved yet.</source>
         <translation>未讀取：驅動器 %1。尚未儲存任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="189"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="190"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>要儲存已讀取的 %n 台驅動器嗎？</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupDialog.cpp" line="213"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="214"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>已將 %n 台驅動器儲存至 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="219"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="220"/>
         <source>Left out (not read): drive(s) %1.</source>
         <translation>已略過 (未讀取)：驅動器 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupDialog.cpp" line="223"/>
+        <location filename="../ui/files/BackupDialog.cpp" line="224"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -1806,87 +1816,87 @@ Remedy: %5</source>
 <context>
     <name>opentop::BackupViewer</name>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="23"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="24"/>
         <source>Backup file</source>
         <translation>備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Label</source>
         <translation>標籤</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="31"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
         <source>Registers</source>
         <translation>暫存器</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="35"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="39"/>
         <source>&amp;Open…</source>
         <translation>開啟(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="36"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="40"/>
         <source>Open another backup file</source>
         <translation>開啟其他備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="37"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="41"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="58"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="62"/>
         <source>%1: no such file</source>
         <translation>%1：檔案不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="64"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="68"/>
         <source>the file could not be read</source>
         <translation>無法讀取檔案</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="65"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="69"/>
         <source>Backup file %1</source>
         <translation>備份檔 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="73"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="77"/>
         <source>Open backup file</source>
         <translation>開啟備份檔</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="74"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="78"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="96"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="100"/>
         <source>File: %1</source>
         <translation>檔案：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="97"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="101"/>
         <source>Refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="112"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="116"/>
         <source>, %1 bit/s, parity %2, %3 stop bit(s)</source>
         <translation>，%1 bit/s，同位元 %2，%3 個停止位元</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="114"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="118"/>
         <source>File: %1
 Written by %2 on %3 (UTC)
 Read from: %4
@@ -1897,17 +1907,17 @@ Drives: %5</source>
 驅動器：%5</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="123"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
         <source>%1 %2, firmware %3</source>
         <translation>%1 %2，韌體 %3</translation>
     </message>
     <message>
-        <location filename="../ui/files/BackupViewer.cpp" line="125"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="130"/>
         <source>(variant unknown)</source>
         <translation>(機型未知)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/BackupViewer.cpp" line="127"/>
+        <location filename="../ui/files/BackupViewer.cpp" line="133"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 項設定</numerusform>
@@ -2069,37 +2079,37 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListMenu</name>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="29"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="30"/>
         <source>&amp;Name this machine…</source>
         <translation>為此機器命名(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="35"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="36"/>
         <source>&amp;Identify again</source>
         <translation>重新識別(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="46"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="47"/>
         <source>&amp;Remove from list</source>
         <translation>從清單移除(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="61"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="62"/>
         <source>Name of %1 (up to %2 characters; empty removes the name):</source>
         <translation>%1 的名稱 (最多 %2 個字元；留空即刪除名稱)：</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="67"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="69"/>
         <source>Name this machine</source>
         <translation>為此機器命名</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="74"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="76"/>
         <source>Machine number %1 has no name now.</source>
         <translation>機號 %1 現在沒有名稱。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListMenu.cpp" line="75"/>
+        <location filename="../ui/bus/BusListMenu.cpp" line="77"/>
         <source>Machine number %1 is now named %2.</source>
         <translation>機號 %1 現在名為 %2。</translation>
     </message>
@@ -2107,133 +2117,133 @@ Drives: %5</source>
 <context>
     <name>opentop::BusListModel</name>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="75"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="76"/>
         <source>Machine number: the drive&apos;s address on the bus (1–247)</source>
         <translation>機號：驅動器在匯流排上的位址（1–247）</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="77"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="78"/>
         <source>The drive&apos;s MONITOR LED: red alarm, green ready, orange CW, sky blue CCW, purple external interrupt, blue memory or communication error, grey no answer</source>
         <translation>驅動器的 MONITOR LED：紅色為警報、綠色為就緒、橘色為 CW、天藍色為 CCW、紫色為外部中斷、藍色為記憶體或通訊錯誤、灰色為無回應</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="84"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="85"/>
         <source>LED</source>
         <translation>LED</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="86"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="87"/>
         <source>No.</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="90"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="91"/>
         <source>Family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="92"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="93"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="94"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="95"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="96"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="97"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="98"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="99"/>
         <source>Control priority</source>
         <translation>控制優先權</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="72"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="73"/>
         <source>How each drive&apos;s machine number is set on its switches:
 %1</source>
         <translation>各驅動器的機號在其開關上的設定方式：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="88"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="89"/>
         <source>Switches</source>
         <translation>開關</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="100"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="101"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="112"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="113"/>
         <source>Two drives may share machine number %1 (%2): check the address switches of every drive on the line, give each drive its own number and restart its power; a bad termination or a swapped A/B pair also corrupts replies.</source>
         <translation>可能有兩台驅動器共用機號 %1 (%2)：請檢查線路上每台驅動器的位址開關，為每台驅動器設定不同的機號並重新上電；終端電阻不良或 A/B 接反也會使回應損壞。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="133"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <source>%1 at %2</source>
         <translation>%1，%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="134"/>
         <location filename="../ui/bus/BusListModel.cpp" line="135"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
-        <location filename="../ui/bus/BusListModel.cpp" line="147"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="148"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="139"/>
         <source>%1 — variant unknown</source>
         <translation>%1 — 機型未知</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="141"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="142"/>
         <source>V%1</source>
         <translation>V%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="170"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="171"/>
         <source>Status light %1: %2 (%3)</source>
         <translation>狀態燈 %1：%2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="174"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="175"/>
         <source>The drive&apos;s manual: %1</source>
         <translation>驅動器手冊：%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="177"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="178"/>
         <source>Status light grey: not live — %1</source>
         <translation>狀態燈灰色：非即時 — %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="185"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
         <source>No name yet: Name… in the context menu (F2) names this machine</source>
         <translation>尚無名稱：在右鍵選單中選「命名…」(F2) 為此機器命名</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="186"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="187"/>
         <source>%1: the name given to this machine (F2 changes it)</source>
         <translation>%1：此機器的名稱 (F2 可變更)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="189"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="190"/>
         <source>Requests to this drive go out at %1, its own line format, not the port&apos;s: the line is switched to it and back between transactions. Change it with Line format… in the context menu.</source>
         <translation>送往此驅動器的要求以它自己的通訊格式 %1 送出，而非連接埠的格式：線路在交易之間切換過去再切換回來。可在右鍵選單的「通訊格式…」中變更。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="196"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="197"/>
         <source>The drive does not report its variant. Choose it from the context menu (Variant) so that values are checked against the right limits.</source>
         <translation>此驅動器不回報機型。請從右鍵選單 (機型) 中選擇，以便依正確的範圍檢查數值。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusListModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusListModel.cpp" line="206"/>
         <source>The drive takes run commands from its I/O terminals; test runs over the bus need communication priority.</source>
         <translation>此驅動器由 I/O 端子接收運轉指令；要透過匯流排試運轉，需設為通訊優先。</translation>
     </message>
@@ -2257,67 +2267,67 @@ Drives: %5</source>
 <context>
     <name>opentop::BusOverviewModel</name>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="132"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="133"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="134"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="135"/>
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="136"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="137"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="138"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="139"/>
         <source>Display</source>
         <translation>顯示</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="140"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="141"/>
         <source>Target</source>
         <translation>目標</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="142"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="143"/>
         <source>Load</source>
         <translation>負載</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="144"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="145"/>
         <source>Alarm</source>
         <translation>警報</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="146"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="147"/>
         <source>Last answer</source>
         <translation>最後回應</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="173"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="174"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="163"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="164"/>
         <source>connection lost; %1</source>
         <translation>連線中斷；%1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="165"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="166"/>
         <source>no answer: %1; %2</source>
         <translation>無回應：%1；%2</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="202"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="203"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusOverviewModel.cpp" line="205"/>
+        <location filename="../ui/bus/BusOverviewModel.cpp" line="206"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
@@ -2361,7 +2371,7 @@ Drives: %5</source>
     </message>
     <message>
         <location filename="../ui/bus/BusPanel.cpp" line="82"/>
-        <location filename="../ui/bus/BusPanel.cpp" line="220"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="221"/>
         <source>%v of %m</source>
         <translation>%v / %m</translation>
     </message>
@@ -2376,47 +2386,47 @@ Drives: %5</source>
         <translation>目前線上的請求完成後停止掃描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="94"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="95"/>
         <source>Rescan at %1</source>
         <translation>以 %1 重新掃描</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="134"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="135"/>
         <source>Drives on the bus</source>
         <translation>匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="150"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="151"/>
         <source>Name this machine…</source>
         <translation>為此機器命名…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="206"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="207"/>
         <source>%v of %m (machine number %1)</source>
         <translation>%v / %m (機號 %1)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="210"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="211"/>
         <source>Machine number %1 answered, identification failed: retrying (%2 of %3)… Polling waits until the scan is over.</source>
         <translation>機號 %1 有回應，但識別失敗：重試中 (第 %2 次，共 %3 次)… 輪詢會等到掃描結束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="222"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="223"/>
         <source>Scanning machine numbers %1–%2 on %3, %4 ms each… Polling waits until the scan is over.</source>
         <translation>正在 %3 上掃描機號 %1–%2，每個 %4 ms… 輪詢會等到掃描結束。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="294"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="295"/>
         <source>If one is on this bus, add it with Add drive and its line format.</source>
         <translation>若匯流排上有這種驅動器，請用「新增驅動器」連同它的通訊格式加入。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="299"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="300"/>
         <source>Machine number %1 answered, but its identification failed, also when asked again: add it by hand with Add drive…, or check its line settings and scan again.</source>
         <translation>機號 %1 有回應，但識別失敗，重新詢問也一樣：請用「新增驅動器…」手動加入，或檢查它的通訊設定後重新掃描。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="242"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="243"/>
         <source>Cancelling after the request on the wire…</source>
         <translation>目前線上的請求完成後取消…</translation>
     </message>
@@ -2428,41 +2438,41 @@ Drives: %5</source>
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="260"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="261"/>
         <source>Did not answer the last scan.</source>
         <translation>上次掃描未回應。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="266"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="267"/>
         <source>The scan stopped at machine number %1: %2</source>
         <translation>掃描在機號 %1 停止：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="272"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>掃描於機號 %1–%2 後取消 (%3 / %4)：找到 %n 台驅動器。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/bus/BusPanel.cpp" line="279"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="280"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>在機號 %1–%2 中找到 %n 台驅動器，耗時 %3 s。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="320"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="321"/>
         <source>Asking machine number %1…</source>
         <translation>正在詢問機號 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="325"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="326"/>
         <source>Machine number %1: %2 added.</source>
         <translation>機號 %1：已新增 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusPanel.cpp" line="327"/>
+        <location filename="../ui/bus/BusPanel.cpp" line="328"/>
         <source>Machine number %1: %2 %3</source>
         <translation>機號 %1：%2 %3</translation>
     </message>
@@ -2480,27 +2490,27 @@ Drives: %5</source>
         <translation>掃描匯流排(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="43"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="44"/>
         <source>Last time on %1: %2.</source>
         <translation>上次在 %1：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="45"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
         <source>&amp;Restore the drive last seen</source>
         <translation>恢復上次出現的驅動器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="46"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
         <source>&amp;Restore the %1 drives last seen</source>
         <translation>恢復上次出現的 %1 台驅動器(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="47"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="48"/>
         <source>Identify the drives at these machine numbers again, with the variants set last time</source>
         <translation>以上次設定的機型，重新識別這些機號上的驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/bus/BusRecallBar.cpp" line="61"/>
+        <location filename="../ui/bus/BusRecallBar.cpp" line="62"/>
         <source>No drive is known on %1 yet. Scan the bus to find the drives.</source>
         <translation>%1 上尚無已知的驅動器。請掃描匯流排以尋找驅動器。</translation>
     </message>
@@ -2587,312 +2597,312 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificateHtml</name>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="44"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
         <source>PASS</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="46"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="48"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
         <source>ABORTED</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="50"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
         <source>STATION ERROR</source>
         <translation>工站錯誤</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="52"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="56"/>
         <source>INTERRUPTED</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="54"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="58"/>
         <source>NOT FINISHED</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="67"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="71"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="74"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
         <source>End-of-line test certificate</source>
         <translation>終檢測試證書</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="77"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
         <source>Serial number</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="78"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
         <source>%1, revision %2</source>
         <translation>%1，版次 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="79"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
         <source>Recipe checksum</source>
         <translation>配方檢查碼</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="80"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
         <source>Recipe approved by</source>
         <translation>配方核准人</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="81"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
         <source>not approved (station without users)</source>
         <translation>未核准（工站無使用者）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="82"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
         <source>%1 (approval %2)</source>
         <translation>%1（核准 %2）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="83"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="84"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="85"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Attempt</source>
         <translation>測試次數</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="86"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
         <source>%1 (tests of this serial under this recipe)</source>
         <translation>第 %1 次（此序號在此配方下的測試）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="87"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="91"/>
         <source>not counted (recorded before attempts were)</source>
         <translation>未計次（記錄時尚未統計測試次數）</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="88"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="92"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="89"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="93"/>
         <source>Ended</source>
         <translation>結束時間</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="90"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="94"/>
         <source>Record</source>
         <translation>記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="99"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="103"/>
         <source>First failure:</source>
         <translation>首個不合格項目：</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>此序號先前有 %n 次測試不合格，列於下方。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="120"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="124"/>
         <source>Drives</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Variant</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>Firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="121"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="125"/>
         <source>How known</source>
         <translation>如何得知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="126"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="129"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
         <source>Written</source>
         <translation>寫入值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Read back</source>
         <translation>回讀值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="130"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
         <source>Verified</source>
         <translation>已驗證</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>written</source>
         <translation>已寫入</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="133"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
         <source>already set</source>
         <translation>原已設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="134"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="138"/>
         <source>NO</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="136"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
         <source>Measurements</source>
         <translation>量測值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Step</source>
         <translation>步驟</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Quantity</source>
         <translation>量測項目</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
         <source>Limits</source>
         <translation>限值</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="137"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="141"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="140"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
         <source>pass</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="143"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
         <source>Earlier tests of this serial</source>
         <translation>此序號先前的測試</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="144"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="148"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="146"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="150"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="147"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="151"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="157"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="161"/>
         <source>Bus traffic around the failure</source>
         <translation>不合格前後的匯流排通訊</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="172"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
         <source>read from the drive</source>
         <translation>從驅動器讀取</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="174"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
         <source>proven by the variant probe</source>
         <translation>由機型探測證實</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="176"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="180"/>
         <source>confirmed by a person</source>
         <translation>由人員確認</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="178"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
         <source>ASSUMED, not proven</source>
         <translation>推定，未證實</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="182"/>
-        <location filename="../model/eol/CertificateHtml.cpp" line="188"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="186"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="192"/>
         <source>not known</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../model/eol/CertificateHtml.cpp" line="190"/>
+        <location filename="../model/eol/CertificateHtml.cpp" line="194"/>
         <source>%1 (assumed)</source>
         <translation>%1（推定）</translation>
     </message>
@@ -2900,12 +2910,12 @@ Drives: %5</source>
 <context>
     <name>opentop::CertificatePdf</name>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="23"/>
+        <location filename="../report/CertificatePdf.cpp" line="26"/>
         <source>End-of-line certificate %1</source>
         <translation>終檢測試證書 %1</translation>
     </message>
     <message>
-        <location filename="../report/CertificatePdf.cpp" line="54"/>
+        <location filename="../report/CertificatePdf.cpp" line="57"/>
         <source>%1 · %2 · page %3 of %4</source>
         <translation>%1 · %2 · 第 %3 頁，共 %4 頁</translation>
     </message>
@@ -2913,7 +2923,7 @@ Drives: %5</source>
 <context>
     <name>opentop::CliApp</name>
     <message>
-        <location filename="../cli/CliApp.cpp" line="73"/>
+        <location filename="../cli/CliApp.cpp" line="74"/>
         <source>Usage: %1 [options] COMMAND [arguments]
 
 Commissioning tool for RS-485 Modbus-RTU motor drives.
@@ -2928,7 +2938,7 @@ RS-485 Modbus-RTU 馬達驅動器試車調機工具。
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="78"/>
+        <location filename="../cli/CliApp.cpp" line="79"/>
         <source>
 Connection (every command that talks to drives):
   --port PATH | --tcp HOST:PORT | --sim SPEC
@@ -2974,23 +2984,23 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="124"/>
+        <location filename="../cli/CliApp.cpp" line="125"/>
         <source>note: standard output could not be written (closed early, or the disk is full): what the command printed there is lost; the work itself ran to its end and exit status %1 says how it ended</source>
         <translation>注意：無法寫入標準輸出 (提早關閉或磁碟已滿)：指令在該處輸出的內容已遺失；工作本身已執行完畢，結束狀態 %1 表示其結果</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="188"/>
-        <location filename="../cli/CliApp.cpp" line="242"/>
+        <location filename="../cli/CliApp.cpp" line="190"/>
+        <location filename="../cli/CliApp.cpp" line="245"/>
         <source>Try &quot;%1 --help&quot;.</source>
         <translation>請執行 &quot;%1 --help&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="208"/>
+        <location filename="../cli/CliApp.cpp" line="210"/>
         <source>%1: unknown command &quot;%2&quot;; commands: </source>
         <translation>%1：未知指令 &quot;%2&quot;；可用指令： </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="216"/>
+        <location filename="../cli/CliApp.cpp" line="219"/>
         <source>Usage: %1 [options] %2
 %3
 </source>
@@ -2999,12 +3009,12 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 </translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="230"/>
+        <location filename="../cli/CliApp.cpp" line="233"/>
         <source>%1 %2: --%3 is not an option of this command; see &quot;%1 help %2&quot;</source>
         <translation>%1 %2：--%3 不是此指令的選項；請參閱 &quot;%1 help %2&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/CliApp.cpp" line="241"/>
+        <location filename="../cli/CliApp.cpp" line="244"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3012,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="96"/>
-        <location filename="../cli/CliContext.cpp" line="110"/>
-        <location filename="../cli/CliContext.cpp" line="118"/>
+        <location filename="../cli/CliContext.cpp" line="97"/>
+        <location filename="../cli/CliContext.cpp" line="111"/>
+        <location filename="../cli/CliContext.cpp" line="119"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="123"/>
+        <location filename="../cli/CliContext.cpp" line="124"/>
         <source>serial line: %1</source>
         <translation>序列線路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="146"/>
+        <location filename="../cli/CliContext.cpp" line="147"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="258"/>
+        <location filename="../cli/CliContext.cpp" line="259"/>
         <source>machine number %1: no connection</source>
         <translation>機號 %1：未連線</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="263"/>
+        <location filename="../cli/CliContext.cpp" line="264"/>
         <source>machine number %1: %2%3</source>
         <translation>機號 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="321"/>
+        <location filename="../cli/CliContext.cpp" line="322"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="325"/>
+        <location filename="../cli/CliContext.cpp" line="326"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驅動器機型；請使用下列其中之一：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="343"/>
+        <location filename="../cli/CliContext.cpp" line="344"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是 1–247 的機號，也不是 3-8 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="353"/>
+        <location filename="../cli/CliContext.cpp" line="354"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
     </message>
@@ -3146,32 +3156,32 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CommandReadBack</name>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="42"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="43"/>
         <source>Read back after the command at %1:</source>
         <translation>%1 指令後回讀：</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is running.</source>
         <translation>馬達運轉中。</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="45"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="46"/>
         <source>The motor is stopped.</source>
         <translation>馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="47"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="48"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="49"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="50"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../ui/run/CommandReadBack.cpp" line="56"/>
+        <location filename="../ui/run/CommandReadBack.cpp" line="57"/>
         <source>The drives of its communication group, read after the command:</source>
         <translation>指令後讀取的通訊群組驅動器：</translation>
     </message>
@@ -3179,95 +3189,95 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CompareCommand</name>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="35"/>
+        <location filename="../cli/CompareCommand.cpp" line="36"/>
         <source>Show the settings that differ; A, B: a machine number, FILE or FILE:ID (exit 0 whether or not they differ)</source>
         <translation>顯示不同的設定；A、B：機號、FILE 或 FILE:ID (無論是否有差異，結束碼皆為 0)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="42"/>
+        <location filename="../cli/CompareCommand.cpp" line="43"/>
         <source>Compare A with the profile&apos;s factory defaults; settings the manual gives no default for are listed, never counted as differences.</source>
         <translation>將 A 與定義檔中的出廠預設值比較；手冊未列預設值的設定會列出，但不計為差異。</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="69"/>
-        <location filename="../cli/CompareCommand.cpp" line="86"/>
-        <location filename="../cli/CompareCommand.cpp" line="144"/>
+        <location filename="../cli/CompareCommand.cpp" line="70"/>
+        <location filename="../cli/CompareCommand.cpp" line="87"/>
+        <location filename="../cli/CompareCommand.cpp" line="146"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="63"/>
+        <location filename="../cli/CompareCommand.cpp" line="64"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="73"/>
+        <location filename="../cli/CompareCommand.cpp" line="74"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="105"/>
+        <location filename="../cli/CompareCommand.cpp" line="106"/>
         <source>error: %1 holds several drives (%2): name one as %1:ID</source>
         <translation>錯誤：%1 含有多台驅動器 (%2)：請以 %1:ID 指定其中一台</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="108"/>
+        <location filename="../cli/CompareCommand.cpp" line="110"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>錯誤：%1 中沒有機號 %2 的驅動器；檔案中有 %3</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="124"/>
+        <location filename="../cli/CompareCommand.cpp" line="126"/>
         <source>error: compare A B, or compare A --defaults (A, B: a machine number, FILE or FILE:ID)</source>
         <translation>錯誤：compare A B，或 compare A --defaults (A、B：機號、FILE 或 FILE:ID)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="142"/>
+        <location filename="../cli/CompareCommand.cpp" line="144"/>
         <source>factory defaults</source>
         <translation>出廠預設值</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="169"/>
+        <location filename="../cli/CompareCommand.cpp" line="172"/>
         <source>A: %1 (%2)</source>
         <translation>A：%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="170"/>
+        <location filename="../cli/CompareCommand.cpp" line="175"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="173"/>
+        <location filename="../cli/CompareCommand.cpp" line="180"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="175"/>
-        <location filename="../cli/CompareCommand.cpp" line="176"/>
+        <location filename="../cli/CompareCommand.cpp" line="182"/>
+        <location filename="../cli/CompareCommand.cpp" line="183"/>
         <source>(not held)</source>
         <translation>(未包含)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="179"/>
+        <location filename="../cli/CompareCommand.cpp" line="186"/>
         <source> in %1 settings compared</source>
         <translation> (共比較 %1 項設定)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="181"/>
+        <location filename="../cli/CompareCommand.cpp" line="188"/>
         <source>no differences (%1 settings compared)</source>
         <translation>無差異 (共比較 %1 項設定)</translation>
     </message>
     <message>
-        <location filename="../cli/CompareCommand.cpp" line="188"/>
+        <location filename="../cli/CompareCommand.cpp" line="195"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
@@ -3301,13 +3311,13 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
         <location filename="../ui/files/CompareDialog.cpp" line="57"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
@@ -3332,105 +3342,105 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
         <translation>讀取所選的兩側並比較 (驅動器會重新讀取)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="75"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="78"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="108"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="111"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="122"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="125"/>
         <source>Reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side A</source>
         <translation>A 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="147"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="150"/>
         <source>side B</source>
         <translation>B 側</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="151"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="154"/>
         <source>Factory defaults</source>
         <translation>出廠預設值</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="158"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="161"/>
         <source>Choose a backup file and a drive in it for %1.</source>
         <translation>請為 %1 選擇備份檔及其中的驅動器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="162"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="165"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="172"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="175"/>
         <source>Choose an identified drive on the bus for %1.</source>
         <translation>請為 %1 選擇匯流排上已識別的驅動器。</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="180"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="183"/>
         <source>%1: cannot read %2</source>
         <translation>%1：無法讀取 %2</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="205"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="208"/>
         <source>Unknown family %1</source>
         <translation>未知系列 %1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="224"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="227"/>
         <source>A: %1</source>
         <translation>A：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="225"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="228"/>
         <source>B: %1</source>
         <translation>B：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="226"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="229"/>
         <source>factory defaults (%1)</source>
         <translation>出廠預設值 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="236"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
         <source>(no documented default)</source>
         <translation>(手冊未列預設值)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="237"/>
-        <location filename="../ui/files/CompareDialog.cpp" line="239"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="240"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="242"/>
         <source>(not held)</source>
         <translation>(未包含)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/CompareDialog.cpp" line="255"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="258"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n 項差異</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="256"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
         <source> in %1 settings compared</source>
         <translation> (共比較 %1 項設定)</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="259"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="262"/>
         <source>Note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/CompareDialog.cpp" line="266"/>
+        <location filename="../ui/files/CompareDialog.cpp" line="269"/>
         <source>No factory default documented (never counted as a difference): %1</source>
         <translation>手冊未列出廠預設值 (不計為差異)：%1</translation>
     </message>
@@ -4790,42 +4800,42 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::DriveName</name>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="18"/>
+        <location filename="../model/bus/DriveName.cpp" line="19"/>
         <source>A machine&apos;s name has at most %1 characters; &quot;%2&quot; has %3.</source>
         <translation>機器名稱最多 %1 個字元；「%2」有 %3 個。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="29"/>
+        <location filename="../model/bus/DriveName.cpp" line="30"/>
         <source>A machine&apos;s name may not hold control characters or line breaks (U+%1).</source>
         <translation>機器名稱不可包含控制字元或換行 (U+%1)。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="37"/>
+        <location filename="../model/bus/DriveName.cpp" line="38"/>
         <source>A machine&apos;s name may not hold %1 (a percent sign directly before a digit).</source>
         <translation>機器名稱不可包含 %1（百分比符號後面緊接數字）。</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="44"/>
+        <location filename="../model/bus/DriveName.cpp" line="47"/>
         <source>machine number %1</source>
         <translation>機號 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="45"/>
+        <location filename="../model/bus/DriveName.cpp" line="48"/>
         <source>machine number %1 (%2)</source>
         <translation>機號 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="50"/>
+        <location filename="../model/bus/DriveName.cpp" line="53"/>
         <source>Machine number %1</source>
         <translation>機號 %1</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="51"/>
+        <location filename="../model/bus/DriveName.cpp" line="54"/>
         <source>Machine number %1 (%2)</source>
         <translation>機號 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/bus/DriveName.cpp" line="68"/>
+        <location filename="../model/bus/DriveName.cpp" line="72"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
@@ -4980,7 +4990,7 @@ Configuration changes written but not stored are discarded.</source>
     <name>opentop::DriveWorkspace</name>
     <message>
         <location filename="../ui/workspace/DriveWorkspace.cpp" line="35"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="167"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="169"/>
         <source>Write &amp;all pending</source>
         <translation>寫入所有待寫入項目(&amp;A)</translation>
     </message>
@@ -4995,66 +5005,66 @@ Configuration changes written but not stored are discarded.</source>
         <translation>全部重新讀取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="53"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="55"/>
         <source>Write every pending edit of this drive, on all pages, and verify</source>
         <translation>寫入此驅動器所有頁面上的待寫入變更並驗證</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="86"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="88"/>
         <source>Select a drive in the bus list to set it up.</source>
         <translation>請在匯流排清單中選擇要設定的驅動器。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
         <translation>
             <numerusform>所有編輯值現已接受。尚未寫入任何值：「寫入所有待寫入值」將送出 %n 個值。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="166"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="168"/>
         <source>Write &amp;all pending (%1)</source>
         <translation>寫入所有待寫入項目 (%1)(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="188"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
         <source>Reading the drive…</source>
         <translation>正在讀取驅動器…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="190"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n 個值無法讀取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="145"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="208"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="147"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="210"/>
         <source>Nothing was written: %1</source>
         <translation>未寫入任何資料：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="142"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="222"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="144"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="224"/>
         <source>%1: %2 Nothing was written.</source>
         <translation>%1：%2 未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="231"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>將 %n 個待寫入的值寫入機號 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="203"/>
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="233"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="205"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="235"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/DriveWorkspace.cpp" line="236"/>
+        <location filename="../ui/workspace/DriveWorkspace.cpp" line="238"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>正在寫入 %n 個值…</numerusform>
@@ -5064,88 +5074,88 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolAuditCommand</name>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="33"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="34"/>
         <source>Show the audit trail: who logged in, approved, used or was refused a privilege</source>
         <translation>顯示稽核紀錄：誰登入、核准、使用或被拒絕某項權限</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="39"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔案或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="40"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>audit: at or after T (2026-11-24, 8h, 2d, today).</source>
         <translation>audit：T 當時或之後（2026-11-24、8h、2d、today）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="41"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
         <source>audit: only this user.</source>
         <translation>audit：僅此使用者。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="42"/>
         <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>NAME</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="43"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="44"/>
         <source>audit: only this station.</source>
         <translation>audit：僅此工站。</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="52"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="53"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="61"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="62"/>
         <source>error: --since: %1</source>
         <translation>錯誤：--since：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="73"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="74"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="88"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="89"/>
         <source>no audit entry matches</source>
         <translation>沒有符合的稽核紀錄</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>user</source>
         <translation>使用者</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../cli/EolAuditCommand.cpp" line="91"/>
+        <location filename="../cli/EolAuditCommand.cpp" line="92"/>
         <source>detail</source>
         <translation>內容</translation>
     </message>
@@ -5153,49 +5163,49 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCertificateCommand</name>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="30"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="31"/>
         <source>A unit&apos;s certificate: its newest record as a PDF, or as JSON with --json</source>
         <translation>產品的測試證書：以 PDF 輸出其最新記錄，或以 --json 輸出 JSON</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>The results database (see results).</source>
         <translation>結果資料庫 (參閱 results)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="36"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="37"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
         <source>certificate: the record with this id instead of the newest.</source>
         <translation>certificate：使用此 id 的記錄，而非最新記錄。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="38"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="39"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="58"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="59"/>
         <source>error: name one serial number, or a record with --id ID; usage: eol %1</source>
         <translation>錯誤：請指定一個序號，或以 --id ID 指定記錄；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="66"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="67"/>
         <source>error: the serial number is empty</source>
         <translation>錯誤：序號為空</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="72"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="129"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="142"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="73"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="154"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="79"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="80"/>
         <source>error: this program cannot draw a PDF (no Qt GUI application); use --json</source>
         <translation>錯誤：此程式無法產生 PDF (沒有 Qt GUI 應用程式)；請使用 --json</translation>
     </message>
@@ -5205,28 +5215,28 @@ Configuration changes written but not stored are discarded.</source>
         <translation>錯誤：%2 中沒有記錄 %1 (%3)</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="101"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="104"/>
         <source>error: record %1 is of serial number %2, not %3</source>
         <translation>錯誤：記錄 %1 屬於序號 %2，而非 %3</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="109"/>
-        <location filename="../cli/EolCertificateCommand.cpp" line="138"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="114"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="147"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="113"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="121"/>
         <source>error: no record of serial number %1 in %2</source>
         <translation>錯誤：%2 中沒有序號 %1 的記錄</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="132"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="141"/>
         <source>wrote %1</source>
         <translation>已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCertificateCommand.cpp" line="145"/>
+        <location filename="../cli/EolCertificateCommand.cpp" line="157"/>
         <source>wrote %1: serial number %2, %3, recorded %4</source>
         <translation>已寫入 %1：序號 %2，%3，記錄於 %4</translation>
     </message>
@@ -5234,19 +5244,19 @@ Configuration changes written but not stored are discarded.</source>
 <context>
     <name>opentop::EolCommand</name>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="35"/>
+        <location filename="../cli/EolCommand.cpp" line="36"/>
         <source>End-of-line station: recipes, the results database, unit certificates</source>
         <translation>終檢工站：配方、結果資料庫、產品測試證書</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="40"/>
+        <location filename="../cli/EolCommand.cpp" line="41"/>
         <source>Subcommands:
 </source>
         <translation>子指令：
 </translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="43"/>
+        <location filename="../cli/EolCommand.cpp" line="44"/>
         <source>Results database: --db URL, else OPENTOP_EOL_DB, else the SQLite file
 $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 &quot;opentop-cli help eol&quot; lists every option; each subcommand takes only its own.</source>
@@ -5255,22 +5265,22 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 &quot;opentop-cli help eol&quot; 會列出所有選項；每個子指令只接受自己的選項。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="91"/>
+        <location filename="../cli/EolCommand.cpp" line="92"/>
         <source>error: name a subcommand: eol %1</source>
         <translation>錯誤：請指定子指令：eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="93"/>
+        <location filename="../cli/EolCommand.cpp" line="94"/>
         <source>error: unknown subcommand &quot;eol %1&quot;; subcommands: %2</source>
         <translation>錯誤：未知子指令 &quot;eol %1&quot;；子指令：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="96"/>
+        <location filename="../cli/EolCommand.cpp" line="98"/>
         <source>See &quot;opentop-cli help eol&quot;.</source>
         <translation>請參閱 &quot;opentop-cli help eol&quot;。</translation>
     </message>
     <message>
-        <location filename="../cli/EolCommand.cpp" line="112"/>
+        <location filename="../cli/EolCommand.cpp" line="114"/>
         <source>error: eol %1: --%2 is not an option of this subcommand; usage: eol %3</source>
         <translation>錯誤：eol %1：--%2 不是此子指令的選項；用法：eol %3</translation>
     </message>
@@ -5399,37 +5409,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeApproveCommand</name>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="34"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="35"/>
         <source>Approve a signed recipe for the line (an engineer): stations then run it</source>
         <translation>核准已簽署的配方供產線使用（工程師）：之後工站即可執行</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔案或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="40"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="41"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="49"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="61"/>
         <source>%1: the recipe is not valid, so it cannot be approved:</source>
         <translation>%1：配方無效，因此無法核准：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="78"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="80"/>
         <source>error: %1; the recipe was not approved</source>
         <translation>錯誤：%1；配方未核准</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeApproveCommand.cpp" line="94"/>
+        <location filename="../cli/EolRecipeApproveCommand.cpp" line="98"/>
         <source>%1 rev. %2 approved by %3 (approval %4, checksum %5)</source>
         <translation>%1 版次 %2 已由 %3 核准（核准 %4，校驗碼 %5）</translation>
     </message>
@@ -5437,49 +5447,49 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="27"/>
         <source>Check a recipe against the drive profiles (and per-unit values of a CSV file)</source>
         <translation>依驅動器定義檔檢查配方 (以及 CSV 檔中的單台數值)</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="32"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
         <source>recipe check: also check every unit&apos;s per-unit values in this CSV file.</source>
         <translation>recipe check：同時檢查此 CSV 檔中每台產品的單台數值。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="33"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="34"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="54"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="55"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="65"/>
         <source>%1, serial %2</source>
         <translation>%1，序號 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="87"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="91"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="89"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="93"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 無效：%n 個問題；不可使用此配方執行</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="97"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="102"/>
         <source>valid: %1 revision %2: %3</source>
         <translation>有效：%1 版次 %2：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeCheckCommand.cpp" line="100"/>
+        <location filename="../cli/EolRecipeCheckCommand.cpp" line="107"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>；已檢查 %1 的 %n 台產品</numerusform>
@@ -5489,220 +5499,220 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeCreateCommand</name>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="38"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="39"/>
         <source>Make a recipe from a golden unit: a backup file or drives on the bus</source>
         <translation>由標準樣品建立配方：來源為備份檔或匯流排上的驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="44"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
         <source>recipe create: the golden unit&apos;s backup file.</source>
         <translation>recipe create：標準樣品的備份檔。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="45"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="46"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="47"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="48"/>
         <source>recipe create: the golden unit&apos;s drives on the bus, e.g. 1,2 (with the connection options).</source>
         <translation>recipe create：標準樣品在匯流排上的驅動器，例如 1,2 (搭配連線選項)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="49"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>recipe create: the product&apos;s name.</source>
         <translation>recipe create：產品名稱。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="50"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>recipe create: the recipe&apos;s revision.</source>
         <translation>recipe create：配方版次。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="51"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="52"/>
         <source>REV</source>
         <translation>REV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="53"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="54"/>
         <source>recipe create: replace an existing recipe file.</source>
         <translation>recipe create：取代既有的配方檔。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="55"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="56"/>
         <source>recipe create --drives: run the golden unit through the recipe&apos;s steps once (its motors turn) and take the hold limits from what it measured.</source>
         <translation>recipe create --drives：讓標準樣品依配方步驟運轉一次 (馬達會轉動)，並以量測值訂定保持步驟的限值。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="58"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="59"/>
         <source>recipe create --measure: the margin around a measured value, in % of it (default 25; at least 5 % of the parameter&apos;s full scale).</source>
         <translation>recipe create --measure：量測值兩側的裕度，以量測值的 % 表示 (預設 25；至少為該參數滿刻度的 5 %)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="60"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
         <source>PERCENT</source>
         <translation>百分比</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="61"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="62"/>
         <source>recipe create --measure: run the motors.</source>
         <translation>recipe create --measure：確認讓馬達運轉。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="75"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="172"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="271"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="76"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="177"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="282"/>
         <source>error: %1; nothing written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="118"/>
         <source>nothing written</source>
         <translation>未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="90"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="91"/>
         <source>%1: %2 settings read</source>
         <translation>%1：已讀取 %2 項設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="106"/>
         <source>interrupted while reading the golden unit: nothing written</source>
         <translation>讀取標準樣品時中斷：未寫入任何檔案</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="109"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="114"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="117"/>
         <source>give its variant with --variant %1=VARIANT</source>
         <translation>請以 --variant %1=機型 指定其機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="130"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
         <source>Would run the golden unit through the recipe&apos;s steps:</source>
         <translation>將讓標準樣品依配方步驟運轉：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="133"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="136"/>
         <source>This turns motors: add --yes to run them. Nothing was run; nothing written.</source>
         <translation>這會使馬達轉動：加上 --yes 才會運轉。未運轉任何馬達，也未寫入任何檔案。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="138"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="141"/>
         <source>measuring the golden unit (Ctrl-C stops every motor):</source>
         <translation>正在量測標準樣品 (按 Ctrl-C 停止所有馬達)：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="146"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="150"/>
         <source>drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="157"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="162"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="170"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="175"/>
         <source>WARNING: %1 is not confirmed stopped</source>
         <translation>警告：%1 未確認停止</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="179"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="185"/>
         <source>limits from the golden unit:</source>
         <translation>由標準樣品訂定的限值：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="183"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="189"/>
         <source>  drive %1, step %2: %3</source>
         <translation>  驅動器 %1，步驟 %2：%3</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="206"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="213"/>
         <source>error: %1; usage: eol %2</source>
         <translation>錯誤：%1；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="210"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="218"/>
         <source>unexpected argument &quot;%1&quot;</source>
         <translation>非預期的引數 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="214"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="222"/>
         <source>give either --from-backup FILE or --drives LIST</source>
         <translation>請指定 --from-backup FILE 或 --drives LIST 其中之一</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="217"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
         <source>--measure needs the golden unit on the bus: give --drives LIST</source>
         <translation>--measure 需要匯流排上的標準樣品：請指定 --drives 清單</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="223"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
         <source>--margin is for --measure</source>
         <translation>--margin 僅用於 --measure</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="225"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
         <source>--margin %1: give a percentage from 1 to 100</source>
         <translation>--margin %1：請輸入 1 到 100 的百分比</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="231"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
         <source>give the product&apos;s name with --product NAME</source>
         <translation>請以 --product NAME 指定產品名稱</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="233"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="241"/>
         <source>give the recipe&apos;s revision with --revision REV</source>
         <translation>請以 --revision REV 指定配方版次</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="236"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="244"/>
         <source>give the recipe file to write with -o RECIPE</source>
         <translation>請以 -o RECIPE 指定要寫入的配方檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="239"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="248"/>
         <source>error: %1 exists; give --force to replace it</source>
         <translation>錯誤：%1 已存在；請加上 --force 以取代</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="243"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="253"/>
         <source>error: %1; nothing read</source>
         <translation>錯誤：%1；未讀取任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="261"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="272"/>
         <source>--drives %1: %2</source>
         <translation>--drives %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="112"/>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="278"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="115"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="290"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="296"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="308"/>
         <source>wrote %1: %2 revision %3, %4</source>
         <translation>已寫入 %1：%2 版次 %3，%4</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeCreateCommand.cpp" line="303"/>
+        <location filename="../cli/EolRecipeCreateCommand.cpp" line="316"/>
         <source>error: the recipe does not pass &quot;eol recipe check&quot;: fix it, then sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>錯誤：配方未通過 &quot;eol recipe check&quot;：請修正後以 &quot;opentop-cli eol recipe sign %1&quot; 簽署</translation>
     </message>
@@ -5710,127 +5720,132 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeShowCommand</name>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="59"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="61"/>
         <source>Show a recipe: positions, settings by label with units, steps and limits</source>
         <translation>顯示配方：位置、依標籤列出的設定 (含單位)、步驟與限值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="70"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
         <source>&apos;%1&apos;</source>
         <translation>&apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="73"/>
         <source>&apos;%1&apos; %2</source>
         <translation>&apos;%1&apos; %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="72"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="74"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="84"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="88"/>
         <source>  no settings</source>
         <translation>  無設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>  setting</source>
         <translation>  設定</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="86"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="90"/>
         <source>unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>  per-unit value</source>
         <translation>  單台數值</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>range</source>
         <translation>範圍</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="96"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="100"/>
         <source>from</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="99"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
         <source>%1 … %2</source>
         <translation>%1 … %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="102"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="106"/>
         <source>CSV file by serial</source>
         <translation>依序號取自 CSV 檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="103"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="107"/>
         <source>typed by the operator</source>
         <translation>由作業員輸入</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="108"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="112"/>
         <source>  no test steps</source>
         <translation>  無測試步驟</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="111"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="115"/>
         <source>  steps:</source>
         <translation>  步驟：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="168"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="174"/>
         <source>%1, revision %2</source>
         <translation>%1，版次 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="171"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="180"/>
+        <source>serial numbers: %1</source>
+        <translation>序號：%1</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="181"/>
         <source>checksum %1</source>
         <translation>檢查碼 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="172"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="182"/>
         <source>family</source>
         <translation>系列</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>variants</source>
         <translation>機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="173"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="183"/>
         <source>firmware</source>
         <translation>韌體</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeShowCommand.cpp" line="184"/>
+        <location filename="../cli/EolRecipeShowCommand.cpp" line="194"/>
         <source>any</source>
         <translation>不限</translation>
     </message>
@@ -5838,29 +5853,29 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="26"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="27"/>
         <source>Accept a recipe edited by hand: a new checksum, only when it passes check</source>
         <translation>接受手動編輯的配方：僅在通過檢查時產生新的檢查碼</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="48"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="49"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>錯誤：%1 未通過檢查 (%n 個問題)；未簽署</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="56"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="57"/>
         <source>error: %1; not signed</source>
         <translation>錯誤：%1；未簽署</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="68"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="70"/>
         <source>%1 is signed already (%2); nothing changed</source>
         <translation>%1 已簽署 (%2)；未做任何變更</translation>
     </message>
     <message>
-        <location filename="../cli/EolRecipeSignCommand.cpp" line="71"/>
+        <location filename="../cli/EolRecipeSignCommand.cpp" line="74"/>
         <source>signed %1: %2 revision %3, %4</source>
         <translation>已簽署 %1：%2 版次 %3，%4</translation>
     </message>
@@ -5868,314 +5883,314 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolResultsCommand</name>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="73"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="74"/>
         <source>List units of the results database, their first-pass yield, or export them as CSV</source>
         <translation>列出結果資料庫中的產品、其一次良率，或匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="80"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="81"/>
         <source>The results database: a SQLite file, sqlite:PATH or postgresql://user@host/db (default: OPENTOP_EOL_DB, else ~/.local/share/opentop/results.db).</source>
         <translation>結果資料庫：SQLite 檔、sqlite:PATH 或 postgresql://user@host/db (預設：OPENTOP_EOL_DB，否則為 ~/.local/share/opentop/results.db)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="82"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="83"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="84"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="85"/>
         <source>results: only this serial number; with * or ? a pattern that ignores case (&quot;SN-10*&quot;).</source>
         <translation>results：只列出此序號；含 * 或 ? 時為不分大小寫的樣式（&quot;SN-10*&quot;）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="86"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="87"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="88"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <source>results: started at or after T (2026-11-24, 2026-11-24T06:00, 8h, 2d, today).</source>
         <translation>results：於 T 或之後開始 (2026-11-24、2026-11-24T06:00、8h、2d、today)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="89"/>
         <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>T</source>
         <translation>T</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="90"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
         <source>results: started before T.</source>
         <translation>results：於 T 之前開始。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
         <source>results: only this recipe (product name).</source>
         <translation>results：僅此配方 (產品名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="91"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="92"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
         <source>V</source>
         <translation>V</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="99"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
         <source>results: only this station.</source>
         <translation>results：僅此工站。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>results: only the newest N units.</source>
         <translation>results：僅最新的 N 台產品。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="100"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="101"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="102"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="103"/>
         <source>results: CSV (RFC 4180) on standard output or to -o FILE.</source>
         <translation>results：以 CSV (RFC 4180) 輸出至標準輸出或 -o FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="107"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
         <source>results --yield: the shifts&apos; start times in local time (default 06:00,14:00,22:00).</source>
         <translation>results --yield：各班別的開始時間，以本地時間表示 (預設 06:00,14:00,22:00)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="108"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="109"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="140"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="141"/>
         <source>&quot;%1&quot; is not a time; give 2026-11-24, 2026-11-24T06:00 (local, or with Z or +01:00), 8h, 2d, today or yesterday</source>
         <translation>&quot;%1&quot; 不是時間；請使用 2026-11-24、2026-11-24T06:00 (本地時間，或加上 Z 或 +01:00)、8h、2d、today 或 yesterday</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="150"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="291"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="151"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="297"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="166"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="167"/>
         <source>--%1: %2</source>
         <translation>--%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="171"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="172"/>
         <source>--since %1 is not before --until %2</source>
         <translation>--since %1 未早於 --until %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="93"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="94"/>
         <source>results: only this version of a recipe (its checksum, as eol recipe check prints it).</source>
         <translation>results：僅此版本的配方 (以檢查碼指定，即 eol recipe check 顯示的值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="95"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="96"/>
         <source>SUM</source>
         <translation>SUM</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="97"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="98"/>
         <source>results: pass, fail, error (station error), interrupted, aborted or running.</source>
         <translation>results：pass、fail、error (工站錯誤)、interrupted、aborted 或 running。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="104"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="105"/>
         <source>results: first-, second- and last-pass yield and failure reasons per recipe version and per shift; station errors and aborts are kept out of yield.</source>
         <translation>results：依配方版本及班別列出一次、二次及最終良率與不合格原因；工站錯誤與中止不計入良率。</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="177"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="178"/>
         <source>--verdict &quot;%1&quot;: give pass, fail, error, interrupted, aborted or running</source>
         <translation>--verdict &quot;%1&quot;：請指定 pass、fail、error、interrupted、aborted 或 running</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="185"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="186"/>
         <source>--limit &quot;%1&quot;: give a number of units from 1</source>
         <translation>--limit &quot;%1&quot;：請指定 1 以上的產品台數</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="195"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="225"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="196"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="226"/>
         <source>no unit matches</source>
         <translation>沒有符合的產品</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="229"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="230"/>
         <source>recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="198"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
         <source>approved by</source>
         <translation>核准人</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="199"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="200"/>
         <source>drives</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="208"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="209"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="210"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="211"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="231"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
         <source>shift</source>
         <translation>班別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>serials</source>
         <translation>序號數</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>first pass</source>
         <translation>一次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>second pass</source>
         <translation>二次合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="232"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
         <source>last pass</source>
         <translation>最終合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>passed</source>
         <translation>合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>failed</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>station errors</source>
         <translation>工站錯誤</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="253"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="254"/>
         <source>Yield per recipe version (station errors and aborts are not counted)</source>
         <translation>各配方版本的良率 (不計入工站錯誤與中止)</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="261"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="263"/>
         <source>%1: checksum %2</source>
         <translation>%1：檢查碼 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="233"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="234"/>
         <source>not finished</source>
         <translation>未完成</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="262"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="266"/>
         <source>Per shift</source>
         <translation>各班別</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="276"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="282"/>
         <source>Failure reasons</source>
         <translation>不合格原因</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="277"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="283"/>
         <source>Station errors (not counted in yield)</source>
         <translation>工站錯誤 (不計入良率)</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="294"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="300"/>
         <source>wrote %1</source>
         <translation>已寫入 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="303"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="308"/>
         <source>error: unexpected argument &quot;%1&quot;; usage: eol %2</source>
         <translation>錯誤：非預期的引數 &quot;%1&quot;；用法：eol %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="309"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="315"/>
         <source>error: give --csv or --json, not both</source>
         <translation>錯誤：--csv 與 --json 只能擇一</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="313"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="319"/>
         <source>error: -o names the CSV file: give --csv too</source>
         <translation>錯誤：-o 指定的是 CSV 檔：請同時加上 --csv</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="318"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="324"/>
         <source>error: --shifts is for --yield</source>
         <translation>錯誤：--shifts 僅用於 --yield</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="328"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="333"/>
         <source>error: --shifts %1: %2</source>
         <translation>錯誤：--shifts %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolResultsCommand.cpp" line="345"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="372"/>
-        <location filename="../cli/EolResultsCommand.cpp" line="380"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="352"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="382"/>
+        <location filename="../cli/EolResultsCommand.cpp" line="393"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
@@ -6242,153 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="58"/>
+        <location filename="../cli/EolRunCommand.cpp" line="60"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="64"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="65"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>無使用者的工站上的測試者（預設：登入名稱）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="69"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="74"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="76"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技術員許可配方規則不允許的重新測試 (已合格的序號，或測試次數已用完)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="108"/>
+        <location filename="../cli/EolRunCommand.cpp" line="110"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="113"/>
+        <location filename="../cli/EolRunCommand.cpp" line="115"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="136"/>
+        <location filename="../cli/EolRunCommand.cpp" line="138"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允許 %3；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="140"/>
         <source>any %1 variant</source>
         <translation>任何 %1 機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="147"/>
+        <location filename="../cli/EolRunCommand.cpp" line="149"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在機號 %2 沒有位置；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="161"/>
+        <location filename="../cli/EolRunCommand.cpp" line="163"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="176"/>
+        <location filename="../cli/EolRunCommand.cpp" line="179"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="207"/>
+        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <source>--serial: %1; nothing was sent</source>
+        <translation>--serial：%1；未送出任何內容</translation>
+    </message>
+    <message>
+        <location filename="../cli/EolRunCommand.cpp" line="218"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="211"/>
+        <location filename="../cli/EolRunCommand.cpp" line="224"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：單元 %1（開始於 %2）因工作站程序已結束而未完成，現已記錄為「中斷」。請確認其馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="216"/>
+        <location filename="../cli/EolRunCommand.cpp" line="229"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 筆結果尚未能送到結果資料庫</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="305"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>error: %1; nothing was sent</source>
         <translation>錯誤：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="307"/>
+        <location filename="../cli/EolRunCommand.cpp" line="323"/>
         <source>a technician allows it with --retest</source>
         <translation>技術員可使用 --retest 許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="259"/>
+        <location filename="../cli/EolRunCommand.cpp" line="272"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；依 --retest 的許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="261"/>
+        <location filename="../cli/EolRunCommand.cpp" line="276"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="268"/>
+        <location filename="../cli/EolRunCommand.cpp" line="283"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="313"/>
+        <location filename="../cli/EolRunCommand.cpp" line="329"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驅動器未確認停止；未進行任何檢測</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="286"/>
+        <location filename="../cli/EolRunCommand.cpp" line="301"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
@@ -6396,45 +6416,45 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunIdentity</name>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="49"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="86"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="50"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="88"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="52"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="99"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="53"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="101"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="63"/>
-        <location filename="../cli/EolRunIdentity.cpp" line="104"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="65"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="107"/>
         <source>refused: %1; nothing was sent</source>
         <translation>拒絕：%1；未傳送任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="64"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="66"/>
         <source>this station has users: name who tests with --user NAME (the password from OPENTOP_PASSWORD or the terminal)</source>
         <translation>此工站有使用者：請以 --user NAME 指定測試者（密碼取自 OPENTOP_PASSWORD 或終端機）</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="71"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="73"/>
         <source>error: on a station with users the operator is the user who logs in (--user); --operator is not taken</source>
         <translation>錯誤：有使用者的工站上，作業員即登入的使用者（--user）；不接受 --operator</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="96"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="98"/>
         <source>run-units: recipe checksum %1 is not approved</source>
         <translation>run-units：配方校驗碼 %1 未核准</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="109"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="113"/>
         <source>refused: %1 Nothing was sent.</source>
         <translation>拒絕：%1 未傳送任何內容。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunIdentity.cpp" line="118"/>
+        <location filename="../cli/EolRunIdentity.cpp" line="123"/>
         <source>%1 logged in; recipe approved by %2 (approval %3)</source>
         <translation>%1 已登入；配方由 %2 核准（核准 %3）</translation>
     </message>
@@ -6442,43 +6462,43 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunOutput</name>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="85"/>
-        <location filename="../cli/EolRunOutput.cpp" line="107"/>
+        <location filename="../cli/EolRunOutput.cpp" line="98"/>
+        <location filename="../cli/EolRunOutput.cpp" line="121"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>ok</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="112"/>
+        <location filename="../cli/EolRunOutput.cpp" line="129"/>
         <source>FAIL</source>
         <translation>不合格</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="145"/>
+        <location filename="../cli/EolRunOutput.cpp" line="165"/>
         <source>rev. %1</source>
         <translation>版次 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="148"/>
+        <location filename="../cli/EolRunOutput.cpp" line="167"/>
         <source>attempt %1</source>
         <translation>第 %1 次測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="155"/>
+        <location filename="../cli/EolRunOutput.cpp" line="174"/>
         <source>the result was NOT recorded: %1</source>
         <translation>結果「未」記錄：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="157"/>
+        <location filename="../cli/EolRunOutput.cpp" line="178"/>
         <source>the results database did not answer: the result is kept on this station (%1) and sent when a station program next reaches the database</source>
         <translation>結果資料庫沒有回應：結果已保存在本工作站（%1），下次工作站程式連上資料庫時會送出</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunOutput.cpp" line="162"/>
+        <location filename="../cli/EolRunOutput.cpp" line="183"/>
         <source>WARNING: motor not confirmed stopped: %1</source>
         <translation>警告：未確認馬達已停止：%1</translation>
     </message>
@@ -6528,42 +6548,37 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolStation</name>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="120"/>
+        <location filename="../model/station/EolStation.cpp" line="121"/>
         <source>a unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="124"/>
+        <location filename="../model/station/EolStation.cpp" line="125"/>
         <source>open a recipe first</source>
         <translation>請先開啟配方</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="138"/>
+        <location filename="../model/station/EolStation.cpp" line="145"/>
         <source>run-units: serial %1: %2</source>
         <translation>run-units：序號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="142"/>
+        <location filename="../model/station/EolStation.cpp" line="149"/>
         <source>not connected to a bus</source>
         <translation>未連線至匯流排</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="146"/>
+        <location filename="../model/station/EolStation.cpp" line="153"/>
         <source>unit %1 starts as soon as the station&apos;s drives are safe</source>
         <translation>工作站的驅動器確認安全後，單元 %1 會立即開始</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="151"/>
-        <source>no serial number</source>
-        <translation>無序號</translation>
-    </message>
-    <message>
-        <location filename="../model/station/EolStation.cpp" line="182"/>
+        <location filename="../model/station/EolStation.cpp" line="185"/>
         <source>serial %1 tested again, allowed by %2: %3</source>
         <translation>序號 %1 重新測試,由 %2 核准:%3</translation>
     </message>
     <message>
-        <location filename="../model/station/EolStation.cpp" line="219"/>
+        <location filename="../model/station/EolStation.cpp" line="227"/>
         <source>no unit was started yet</source>
         <translation>尚未開始任何產品的測試</translation>
     </message>
@@ -6622,102 +6637,102 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolSupport</name>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="25"/>
+        <location filename="../cli/EolSupport.cpp" line="26"/>
         <source>error: name one recipe file; usage: eol %1</source>
         <translation>錯誤：請指定一個配方檔；用法：eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="38"/>
+        <location filename="../cli/EolSupport.cpp" line="39"/>
         <source>no such file</source>
         <translation>檔案不存在</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="40"/>
+        <location filename="../cli/EolSupport.cpp" line="41"/>
         <source>is a directory; name a recipe file</source>
         <translation>是資料夾；請指定配方檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="42"/>
+        <location filename="../cli/EolSupport.cpp" line="43"/>
         <source>is not a regular file (a device, FIFO or socket); name a recipe file</source>
         <translation>不是一般檔案 (裝置、FIFO 或 socket)；請指定配方檔</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="44"/>
+        <location filename="../cli/EolSupport.cpp" line="45"/>
         <source>is larger than %1 MB, the most a recipe file may hold</source>
         <translation>大於配方檔上限 %1 MB</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="48"/>
+        <location filename="../cli/EolSupport.cpp" line="49"/>
         <source>cannot be read: %1</source>
         <translation>無法讀取：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="50"/>
-        <location filename="../cli/EolSupport.cpp" line="171"/>
+        <location filename="../cli/EolSupport.cpp" line="51"/>
+        <location filename="../cli/EolSupport.cpp" line="177"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="77"/>
-        <location filename="../cli/EolSupport.cpp" line="188"/>
+        <location filename="../cli/EolSupport.cpp" line="78"/>
+        <location filename="../cli/EolSupport.cpp" line="199"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="84"/>
+        <location filename="../cli/EolSupport.cpp" line="86"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="91"/>
+        <location filename="../cli/EolSupport.cpp" line="95"/>
         <source>%1 was changed after OpenTOP wrote it (its checksum does not match), so no station runs it. Check it with &quot;opentop-cli eol recipe check %1&quot; and, when it is right, sign it with &quot;opentop-cli eol recipe sign %1&quot;</source>
         <translation>%1 在 OpenTOP 寫入後曾被修改 (檢查碼不符)，因此任何工站都不會執行。請以 &quot;opentop-cli eol recipe check %1&quot; 檢查，確認無誤後以 &quot;opentop-cli eol recipe sign %1&quot; 簽署</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="109"/>
+        <location filename="../cli/EolSupport.cpp" line="113"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="134"/>
+        <location filename="../cli/EolSupport.cpp" line="140"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>%n 個位置</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="135"/>
+        <location filename="../cli/EolSupport.cpp" line="141"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n 項設定</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="137"/>
+        <location filename="../cli/EolSupport.cpp" line="143"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>%n 個單台數值</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/EolSupport.cpp" line="138"/>
+        <location filename="../cli/EolSupport.cpp" line="144"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n 個步驟</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="145"/>
+        <location filename="../cli/EolSupport.cpp" line="151"/>
         <source>The file to write (recipe create; results --csv; certificate).</source>
         <translation>要寫入的檔案 (recipe create；results --csv；certificate)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="146"/>
+        <location filename="../cli/EolSupport.cpp" line="152"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/EolSupport.cpp" line="179"/>
+        <location filename="../cli/EolSupport.cpp" line="188"/>
         <source>error: no results database at %1 (nothing recorded there yet); name one with --db URL</source>
         <translation>錯誤：%1 沒有結果資料庫 (尚未記錄任何資料)；請以 --db URL 指定</translation>
     </message>
@@ -6749,139 +6764,139 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolUserCommand</name>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="71"/>
+        <location filename="../cli/EolUserCommand.cpp" line="72"/>
         <source>Add a user (operator, technician, engineer or administrator); the first user is an administrator and needs no --user</source>
         <translation>新增使用者（作業員、技術員、工程師或管理員）；第一位使用者是管理員，不需要 --user</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="74"/>
+        <location filename="../cli/EolUserCommand.cpp" line="75"/>
         <source>List the users of the results database</source>
         <translation>列出結果資料庫的使用者</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="76"/>
+        <location filename="../cli/EolUserCommand.cpp" line="77"/>
         <source>Disable a user: they can no longer log in; their records stay</source>
         <translation>停用使用者：無法再登入；其紀錄保留</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="80"/>
+        <location filename="../cli/EolUserCommand.cpp" line="81"/>
         <source>Set a user&apos;s password (your own with your old one, anyone&apos;s as administrator)</source>
         <translation>設定使用者密碼（自己的需輸入舊密碼，管理員可設定任何人的）</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔案或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="86"/>
+        <location filename="../cli/EolUserCommand.cpp" line="87"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="89"/>
+        <location filename="../cli/EolUserCommand.cpp" line="90"/>
         <source>user add: operator, technician, engineer or administrator.</source>
         <translation>user add：operator、technician、engineer 或 administrator。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="91"/>
+        <location filename="../cli/EolUserCommand.cpp" line="92"/>
         <source>ROLE</source>
         <translation>角色</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="92"/>
+        <location filename="../cli/EolUserCommand.cpp" line="93"/>
         <source>user add: the name shown on the screen.</source>
         <translation>user add：畫面上顯示的名稱。</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="93"/>
+        <location filename="../cli/EolUserCommand.cpp" line="94"/>
         <source>TEXT</source>
         <translation>文字</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="108"/>
-        <location filename="../cli/EolUserCommand.cpp" line="167"/>
+        <location filename="../cli/EolUserCommand.cpp" line="109"/>
+        <location filename="../cli/EolUserCommand.cpp" line="168"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="123"/>
+        <location filename="../cli/EolUserCommand.cpp" line="124"/>
         <source>no users: this station is unmanaged (anyone can run, edit and leave); add the first administrator with: opentop-cli eol user add NAME --role administrator</source>
         <translation>沒有使用者：此工站未受管理（任何人都可執行、編輯和離開）；新增第一位管理員：opentop-cli eol user add NAME --role administrator</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>user</source>
         <translation>使用者</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>role</source>
         <translation>角色</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>active</source>
         <translation>啟用</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="129"/>
+        <location filename="../cli/EolUserCommand.cpp" line="130"/>
         <source>created</source>
         <translation>建立時間</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="132"/>
+        <location filename="../cli/EolUserCommand.cpp" line="133"/>
         <source>no (disabled)</source>
         <translation>否（已停用）</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="144"/>
+        <location filename="../cli/EolUserCommand.cpp" line="145"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="152"/>
+        <location filename="../cli/EolUserCommand.cpp" line="153"/>
         <source>error: --role is one of: %1</source>
         <translation>錯誤：--role 須為下列之一：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="181"/>
+        <location filename="../cli/EolUserCommand.cpp" line="183"/>
         <source>Present password for %1: </source>
         <translation>%1 的目前密碼：</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="191"/>
-        <location filename="../cli/EolUserCommand.cpp" line="211"/>
+        <location filename="../cli/EolUserCommand.cpp" line="194"/>
+        <location filename="../cli/EolUserCommand.cpp" line="216"/>
         <source>New password for %1: </source>
         <translation>%1 的新密碼：</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="200"/>
+        <location filename="../cli/EolUserCommand.cpp" line="203"/>
         <source>user %1 added as %2</source>
         <translation>已新增使用者 %1，角色 %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="207"/>
+        <location filename="../cli/EolUserCommand.cpp" line="211"/>
         <source>user %1 disabled</source>
         <translation>已停用使用者 %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="216"/>
+        <location filename="../cli/EolUserCommand.cpp" line="221"/>
         <source>password of %1 changed</source>
         <translation>已變更 %1 的密碼</translation>
     </message>
     <message>
-        <location filename="../cli/EolUserCommand.cpp" line="224"/>
+        <location filename="../cli/EolUserCommand.cpp" line="230"/>
         <source>error: %1; nothing was changed</source>
         <translation>錯誤：%1；未做任何變更</translation>
     </message>
@@ -6935,42 +6950,42 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::ExitGuard</name>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="96"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="99"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="131"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="134"/>
         <source>Stopping the drives, then giving control back to their inputs…</source>
         <translation>正在停止驅動器，接著將控制權交還給其輸入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="135"/>
         <source>Stopping the drives…</source>
         <translation>正在停止驅動器…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="129"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="132"/>
         <source>Giving control back to the drives&apos; inputs…</source>
         <translation>正在將控制權交還給驅動器的輸入端子…</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="156"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
         <source>Not every drive is safe</source>
         <translation>並非所有驅動器都已處於安全狀態</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="157"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
         <source>Could not %1 every drive:</source>
         <translation>無法對所有驅動器執行「%1」：</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="159"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="162"/>
         <source>Stay connected</source>
         <translation>保持連線</translation>
     </message>
     <message>
-        <location filename="../ui/run/ExitGuard.cpp" line="160"/>
+        <location filename="../ui/run/ExitGuard.cpp" line="163"/>
         <source>Go on anyway</source>
         <translation>仍要繼續</translation>
     </message>
@@ -7214,27 +7229,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::FileCommandSupport</name>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="28"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="29"/>
         <source>no such file</source>
         <translation>檔案不存在</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="30"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="31"/>
         <source>is a directory; name a backup file</source>
         <translation>是資料夾；請指定備份檔</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="32"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="33"/>
         <source>is not a regular file (a device, FIFO or socket); name a backup file</source>
         <translation>不是一般檔案 (裝置、FIFO 或 socket)；請指定備份檔</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="34"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="35"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/FileCommandSupport.cpp" line="41"/>
+        <location filename="../cli/FileCommandSupport.cpp" line="43"/>
         <source>error: %1 refused: %2</source>
         <translation>錯誤：%1 被拒絕：%2</translation>
     </message>
@@ -7273,135 +7288,135 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GetCommand</name>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="43"/>
+        <location filename="../cli/GetCommand.cpp" line="44"/>
         <source>Read parameters by name in engineering units (or registers with --raw)</source>
         <translation>依名稱以工程單位讀取參數 (或以 --raw 讀取暫存器)</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>Read every parameter of a group (see params).</source>
         <translation>讀取某一參數群組的所有參數 (參閱 params)。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="49"/>
+        <location filename="../cli/GetCommand.cpp" line="50"/>
         <source>GROUP</source>
         <translation>GROUP</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="50"/>
+        <location filename="../cli/GetCommand.cpp" line="51"/>
         <source>Read every readable parameter.</source>
         <translation>讀取所有可讀取的參數。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>Read registers by address: ADDR or ADDR:COUNT (0x.. or decimal).</source>
         <translation>依位址讀取暫存器：ADDR 或 ADDR:COUNT (0x.. 或十進位)。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="52"/>
+        <location filename="../cli/GetCommand.cpp" line="53"/>
         <source>ADDR</source>
         <translation>ADDR</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="54"/>
+        <location filename="../cli/GetCommand.cpp" line="55"/>
         <source>Function code for --raw: 3 (holding) or 4 (input) to read, 6 or 16 to write.</source>
         <translation>--raw 使用的功能碼：讀取用 3 (holding) 或 4 (input)，寫入用 6 或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="55"/>
+        <location filename="../cli/GetCommand.cpp" line="56"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="63"/>
+        <location filename="../cli/GetCommand.cpp" line="64"/>
         <source>error: give one machine number first: get ID NAME...</source>
         <translation>錯誤：請先指定一個機號：get ID NAME...</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="71"/>
+        <location filename="../cli/GetCommand.cpp" line="72"/>
         <source>error: name parameters, or give exactly one of --group, --all, --raw</source>
         <translation>錯誤：請指定參數，或在 --group、--all、--raw 中擇一</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="79"/>
-        <location filename="../cli/GetCommand.cpp" line="209"/>
+        <location filename="../cli/GetCommand.cpp" line="80"/>
+        <location filename="../cli/GetCommand.cpp" line="210"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="90"/>
+        <location filename="../cli/GetCommand.cpp" line="91"/>
         <source>error: %1 has no group &quot;%2&quot;; groups: %3</source>
         <translation>錯誤：%1 沒有參數群組 &quot;%2&quot;；群組：%3</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="108"/>
+        <location filename="../cli/GetCommand.cpp" line="109"/>
         <source>error: %1 is a write-only command and cannot be read</source>
         <translation>錯誤：%1 是僅可寫入的指令，無法讀取</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="109"/>
+        <location filename="../cli/GetCommand.cpp" line="110"/>
         <source>error: %1 has no parameter &quot;%2&quot;; see &quot;opentop-cli params --family %1&quot;</source>
         <translation>錯誤：%1 沒有參數 &quot;%2&quot;；請參閱 &quot;opentop-cli params --family %1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="123"/>
+        <location filename="../cli/GetCommand.cpp" line="124"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Raw</source>
         <translation>原始值</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="153"/>
+        <location filename="../cli/GetCommand.cpp" line="154"/>
         <source>Label</source>
         <translation>標籤</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="158"/>
+        <location filename="../cli/GetCommand.cpp" line="159"/>
         <source>(failed: %1)</source>
         <translation>(失敗：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="160"/>
+        <location filename="../cli/GetCommand.cpp" line="161"/>
         <source>  ! outside the profile&apos;s allowed values</source>
         <translation>  ! 超出定義檔的允許值</translation>
     </message>
     <message numerus="yes">
-        <location filename="../cli/GetCommand.cpp" line="167"/>
+        <location filename="../cli/GetCommand.cpp" line="168"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>錯誤：%n 個參數無法讀取</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="190"/>
+        <location filename="../cli/GetCommand.cpp" line="191"/>
         <source>error: --raw needs ADDR or ADDR:COUNT (address 0x0000–0xFFFF, count 1–125) and --fc 3 or 4</source>
         <translation>錯誤：--raw 需要 ADDR 或 ADDR:COUNT (位址 0x0000–0xFFFF，數量 1–125) 以及 --fc 3 或 4</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Address</source>
         <translation>位址</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Hex</source>
         <translation>十六進位</translation>
     </message>
     <message>
-        <location filename="../cli/GetCommand.cpp" line="221"/>
+        <location filename="../cli/GetCommand.cpp" line="223"/>
         <source>Decimal</source>
         <translation>十進位</translation>
     </message>
@@ -7485,89 +7500,89 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GoldenMeasureButton</name>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="33"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="36"/>
         <source>Measure limits…</source>
         <translation>量測限值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="39"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="42"/>
         <source>Run the golden unit on the bus through the recipe&apos;s steps once and take the hold limits from what it measures: the measured value ± 25 % (at least 5 % of full scale), never wider than the limits before</source>
         <translation>讓匯流排上的標準樣品依配方步驟運轉一次，以量測值訂定保持步驟的限值：量測值 ± 25 % (至少為滿刻度的 5 %)，不會比原限值寬</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="49"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="83"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="52"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="87"/>
         <source>Measure limits on the golden unit</source>
         <translation>在標準樣品上量測限值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="57"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="60"/>
         <source>The recipe has no positions.</source>
         <translation>配方沒有任何工位。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="58"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="61"/>
         <source>The recipe cannot be read: %1</source>
         <translation>無法讀取配方：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="62"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="65"/>
         <source>Machine number %1 is not a drive on the bus: connect to the golden unit and scan first.</source>
         <translation>機號 %1 不是匯流排上的驅動器：請先連線到標準樣品並掃描。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="67"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="70"/>
         <source>Run the golden unit through the recipe&apos;s steps? These motors turn:</source>
         <translation>要讓標準樣品依配方步驟運轉嗎？以下馬達會轉動：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="72"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="76"/>
         <source>Run the motors</source>
         <translation>運轉馬達</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="86"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="90"/>
         <source>The bus is not connected.</source>
         <translation>匯流排未連線。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Measuring the golden unit…</source>
         <translation>正在量測標準樣品…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="91"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="95"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="98"/>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="100"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="102"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="104"/>
         <source>stopped by the user</source>
         <translation>由使用者停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="103"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="108"/>
         <source>Machine number %1: %2</source>
         <translation>機號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="115"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="120"/>
         <source>%1 is not confirmed stopped.</source>
         <translation>%1 未確認停止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="117"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="122"/>
         <source>No limits were taken: %1</source>
         <translation>未訂定任何限值：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="124"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="129"/>
         <source>Machine number %1, step %2: %3</source>
         <translation>機號 %1，步驟 %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="130"/>
+        <location filename="../ui/eol/GoldenMeasureButton.cpp" line="135"/>
         <source>The hold limits now follow the golden unit. Check them, then save the recipe.</source>
         <translation>保持步驟的限值已依標準樣品訂定。請確認後儲存配方。</translation>
     </message>
@@ -7659,98 +7674,98 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::GroupCheck</name>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="64"/>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="65"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="72"/>
+        <location filename="../cli/GroupCheck.cpp" line="73"/>
         <source>note: --no-group-check: drives in communication group %1 (which also execute what is sent to %1) were not looked for</source>
         <translation>注意：--no-group-check：未尋找通訊群組 %1 內的驅動器 (它們也會執行送往 %1 的內容)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="78"/>
+        <location filename="../cli/GroupCheck.cpp" line="79"/>
         <source>error: the drives on this bus are not known, so drives in communication group %1 (which also execute what is sent to %1, without replying) cannot be named; nothing was sent</source>
         <translation>錯誤：不知道此匯流排上有哪些驅動器，因此無法列出通訊群組 %1 內的驅動器 (它們也會執行送往 %1 的內容，且不回應)；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="83"/>
+        <location filename="../cli/GroupCheck.cpp" line="84"/>
         <source>scan the bus first (opentop-cli scan), name its drives with --bus-drives LIST, or add --no-group-check to send it without looking</source>
         <translation>請先掃描匯流排 (opentop-cli scan)、以 --bus-drives LIST 指定其驅動器，或加上 --no-group-check 不檢查直接送出</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="108"/>
+        <location filename="../cli/GroupCheck.cpp" line="109"/>
         <source>warning: the communication group of %1 could not be read</source>
         <translation>警告：無法讀取 %1 的通訊群組</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="118"/>
+        <location filename="../cli/GroupCheck.cpp" line="119"/>
         <source>note: the drives on the bus are %1, from %2; drives added since are not known until the next scan</source>
         <translation>注意：匯流排上的驅動器為 %1，取自%2；之後加入的驅動器要到下次掃描才會知道</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="130"/>
+        <location filename="../cli/GroupCheck.cpp" line="131"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="133"/>
+        <location filename="../cli/GroupCheck.cpp" line="134"/>
         <source>add --yes to send it to all of %1 and %2; nothing was sent</source>
         <translation>加上 --yes 才會送往 %1 及 %2 全部；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="168"/>
+        <location filename="../cli/GroupCheck.cpp" line="169"/>
         <source>not readable</source>
         <translation>無法讀取</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="192"/>
+        <location filename="../cli/GroupCheck.cpp" line="193"/>
         <source>Read back from the drives of the group:</source>
         <translation>從群組中的驅動器回讀：</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="193"/>
+        <location filename="../cli/GroupCheck.cpp" line="194"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="196"/>
+        <location filename="../cli/GroupCheck.cpp" line="197"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="197"/>
+        <location filename="../cli/GroupCheck.cpp" line="198"/>
         <source>verified</source>
         <translation>已確認</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="198"/>
+        <location filename="../cli/GroupCheck.cpp" line="199"/>
         <source>DIFFERS from what was written</source>
         <translation>與寫入值不同</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="199"/>
+        <location filename="../cli/GroupCheck.cpp" line="200"/>
         <source>not verified</source>
         <translation>未確認</translation>
     </message>
     <message>
-        <location filename="../cli/GroupCheck.cpp" line="247"/>
+        <location filename="../cli/GroupCheck.cpp" line="248"/>
         <source>off</source>
         <translation>停用</translation>
     </message>
@@ -7846,12 +7861,12 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
         <translation>通訊群組</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="63"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
         <source>Their values are read back afterwards.</source>
         <translation>之後會回讀它們的值。</translation>
     </message>
     <message>
-        <location filename="../ui/groups/GroupWriteCheck.cpp" line="64"/>
+        <location filename="../ui/groups/GroupWriteCheck.cpp" line="65"/>
         <source>Send, also to %1</source>
         <translation>送出 (也會送往 %1)</translation>
     </message>
@@ -8097,27 +8112,27 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::IdentityDialog</name>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="22"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="23"/>
         <source>Who is it?</source>
         <translation>請確認身分</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="24"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="25"/>
         <source>To %1 this station needs the %2 role or higher. Log in with your user name and password.</source>
         <translation>要%1，此工站需要%2或更高角色。請以使用者名稱和密碼登入。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="40"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="42"/>
         <source>User name:</source>
         <translation>使用者名稱:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="41"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="43"/>
         <source>Password:</source>
         <translation>密碼:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/IdentityDialog.cpp" line="60"/>
+        <location filename="../ui/eol/IdentityDialog.cpp" line="62"/>
         <source>Refused: %1</source>
         <translation>已拒絕：%1</translation>
     </message>
@@ -8805,79 +8820,127 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorCommand</name>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="37"/>
+        <location filename="../cli/MonitorCommand.cpp" line="47"/>
         <source>Watch speed, load, state, inputs and alarms live (Ctrl-C ends)</source>
         <translation>即時監視速度、負載、狀態、輸入與警報 (按 Ctrl-C 結束)</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="44"/>
+        <location filename="../cli/MonitorCommand.cpp" line="54"/>
         <source>Time between samples of a drive in ms, %1–%2 (default 500).</source>
         <translation>每台驅動器的取樣間隔，單位 ms，%1–%2 (預設 500)。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="47"/>
+        <location filename="../cli/MonitorCommand.cpp" line="57"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="48"/>
+        <location filename="../cli/MonitorCommand.cpp" line="58"/>
         <source>Stop after N samples per drive (default: until Ctrl-C).</source>
         <translation>每台驅動器取樣 N 次後停止 (預設：直到按下 Ctrl-C)。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="49"/>
+        <location filename="../cli/MonitorCommand.cpp" line="59"/>
         <source>N</source>
         <translation>N</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="50"/>
-        <source>Also write every sample to FILE (CSV with a header).</source>
-        <translation>同時將每筆取樣寫入 FILE (含標題列的 CSV)。</translation>
+        <location filename="../cli/MonitorCommand.cpp" line="61"/>
+        <source>Also write every sample to FILE (CSV with a header; a row with a note where the link was lost and where it came back).</source>
+        <translation>同時將每筆取樣寫入 FILE (含標題列的 CSV；連線中斷處與恢復處各有一列附註)。</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="51"/>
+        <location filename="../cli/MonitorCommand.cpp" line="63"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="63"/>
+        <location filename="../cli/MonitorCommand.cpp" line="65"/>
+        <source>When the link to the bus is lost, exit 1 if it is not back within SECONDS (default: reconnect by itself, 0.5 s to 5 s apart, until Ctrl-C).</source>
+        <translation>與匯流排的連線中斷時，若 SECONDS 秒內未恢復則以 1 結束 (預設：自動重新連線，間隔 0.5 秒至 5 秒，直到按下 Ctrl-C)。</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="67"/>
+        <source>SECONDS</source>
+        <translation>SECONDS</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="79"/>
         <source>error: usage: %1</source>
         <translation>錯誤：用法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="73"/>
+        <location filename="../cli/MonitorCommand.cpp" line="89"/>
         <source>error: --interval must be %1–%2 ms, got &quot;%3&quot;</source>
         <translation>錯誤：--interval 必須為 %1–%2 ms，收到 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="86"/>
+        <location filename="../cli/MonitorCommand.cpp" line="102"/>
         <source>error: --count must be a whole number of samples, 1 or more, got &quot;%1&quot;</source>
         <translation>錯誤：--count 必須是 1 以上的整數取樣次數，收到 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="96"/>
+        <location filename="../cli/MonitorCommand.cpp" line="113"/>
+        <source>error: --give-up must be a number of seconds, more than 0 and at most %1, got &quot;%2&quot;</source>
+        <translation>錯誤：--give-up 必須是大於 0 且不超過 %1 的秒數，收到「%2」</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="125"/>
         <source>error: cannot write %1: %2</source>
         <translation>錯誤：無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="106"/>
+        <location filename="../cli/MonitorCommand.cpp" line="134"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="126"/>
+        <location filename="../cli/MonitorCommand.cpp" line="154"/>
         <source>warning: machine number %1: %2; speeds are shown in r/min only</source>
         <translation>警告：機號 %1：%2；速度僅以 r/min 顯示</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="203"/>
+        <location filename="../cli/MonitorCommand.cpp" line="194"/>
         <source>error: cannot write %1: %2; monitoring stopped</source>
         <translation>錯誤：無法寫入 %1：%2；監視已停止</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorCommand.cpp" line="227"/>
+        <location filename="../cli/MonitorCommand.cpp" line="233"/>
+        <source>%1 link lost: %2 (%3); reconnecting for up to %4 s (Ctrl-C ends)</source>
+        <translation>%1 連線中斷：%2 (%3)；最多 %4 秒內持續重新連線 (Ctrl-C 結束)</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="237"/>
+        <source>%1 link lost: %2 (%3); reconnecting until it is back (Ctrl-C ends)</source>
+        <translation>%1 連線中斷：%2 (%3)；持續重新連線直到恢復 (Ctrl-C 結束)</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="246"/>
+        <source>%1 link back after %2 s: %3; monitoring goes on</source>
+        <translation>%1 連線已於 %2 秒後恢復：%3；繼續監視</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="261"/>
+        <source>error: the link to %1 was lost at %2 and is not back after %3 s (--give-up %4): %5; monitoring stopped</source>
+        <translation>錯誤：與 %1 的連線於 %2 中斷，%3 秒後仍未恢復 (--give-up %4)：%5；監視已停止</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCommand.cpp" line="303"/>
         <source>%1 error: %2</source>
         <translation>%1 錯誤：%2</translation>
+    </message>
+</context>
+<context>
+    <name>opentop::MonitorCsv</name>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="33"/>
+        <source>link lost</source>
+        <translation>連線中斷</translation>
+    </message>
+    <message>
+        <location filename="../cli/MonitorCsv.cpp" line="38"/>
+        <source>link back</source>
+        <translation>連線恢復</translation>
     </message>
 </context>
 <context>
@@ -8897,42 +8960,42 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MonitorOutput</name>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Target shown</source>
         <translation>目標顯示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="117"/>
+        <location filename="../cli/MonitorOutput.cpp" line="118"/>
         <source>Speed shown</source>
         <translation>速度顯示值</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="127"/>
+        <location filename="../cli/MonitorOutput.cpp" line="128"/>
         <source>Active alarm</source>
         <translation>發生中的警報</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="169"/>
+        <location filename="../cli/MonitorOutput.cpp" line="170"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>code %1</source>
         <translation>代碼 %1</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="172"/>
+        <location filename="../cli/MonitorOutput.cpp" line="173"/>
         <source>active</source>
         <translation>發生中</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="179"/>
+        <location filename="../cli/MonitorOutput.cpp" line="180"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../cli/MonitorOutput.cpp" line="180"/>
+        <location filename="../cli/MonitorOutput.cpp" line="181"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -9051,12 +9114,12 @@ Still connected to %2; nothing was changed.</source>
 <context>
     <name>opentop::MotionPriorityBox</name>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="33"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="34"/>
         <source>Switch to communication priority…</source>
         <translation>切換為通訊優先…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="58"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="59"/>
         <source>Machine number %1 is in &quot;%2&quot; (%3): it takes run, stop, direction and speed selection from its input terminals and refuses motion commands over the bus, so the test run is disabled.
 
 Switching to &quot;%4&quot; hands these commands to the bus: the input terminals no longer start or stop the motor, and the machine&apos;s own controls stay without effect until you switch back to &quot;%2&quot;.</source>
@@ -9065,53 +9128,53 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 切換為「%4」會將這些指令交給匯流排：輸入端子將不再能啟動或停止馬達，在您切換回「%2」之前，機台本身的控制均無作用。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="84"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
         <source>Switch to communication priority</source>
         <translation>切換為通訊優先</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="85"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="86"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from the bus (%2 = &quot;%3&quot;). Its input terminals then no longer start or stop the motor.</source>
         <translation>機號 %1 的運轉、停止、方向與速度選擇將改由匯流排控制 (%2 = &quot;%3&quot;)。之後其輸入端子將不再能啟動或停止馬達。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="91"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="92"/>
         <source>Switch</source>
         <translation>切換</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="100"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="101"/>
         <source>Switching to communication priority…</source>
         <translation>正在切換為通訊優先…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="108"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="109"/>
         <source>Machine number %1 takes motion commands over the bus now.</source>
         <translation>機號 %1 現在接受來自匯流排的運轉指令。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="110"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="111"/>
         <source>Cannot switch the control priority: %1</source>
         <translation>無法切換控制優先權：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="120"/>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="126"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="127"/>
         <source>Return to I/O priority</source>
         <translation>恢復為 I/O 優先</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="121"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="122"/>
         <source>Machine number %1 will take run, stop, direction and speed selection from its input terminals again, and refuse motion commands over the bus. If an input says run, the motor runs.</source>
         <translation>機號 %1 將再次由輸入端子控制運轉、停止、方向與速度選擇，並拒絕來自匯流排的運轉指令。若輸入為運轉狀態，馬達即會運轉。</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="129"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="130"/>
         <source>Returning to I/O priority…</source>
         <translation>正在恢復為 I/O 優先…</translation>
     </message>
     <message>
-        <location filename="../ui/run/MotionPriorityBox.cpp" line="138"/>
+        <location filename="../ui/run/MotionPriorityBox.cpp" line="139"/>
         <source>Machine number %1 follows its input terminals again.</source>
         <translation>機號 %1 已恢復由輸入端子控制。</translation>
     </message>
@@ -9153,184 +9216,184 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="38"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="39"/>
         <source>&amp;Write to all</source>
         <translation>全部寫入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="40"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="41"/>
         <source>Write one setting to several drives</source>
         <translation>將一項設定寫入多台驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Machine number</source>
         <translation>機號</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Model</source>
         <translation>型號</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="57"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
         <source>Current value</source>
         <translation>目前值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="58"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="59"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="76"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
         <source>Not written: another family (%1)</source>
         <translation>未寫入：不同系列 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="77"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="78"/>
         <source>Not written: not identified (%1)</source>
         <translation>未寫入：無法識別 (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="82"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="83"/>
         <source>&amp;Setting:</source>
         <translation>設定(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="88"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="89"/>
         <source>New &amp;value:</source>
         <translation>新值(&amp;V)：</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="160"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="162"/>
         <source>cannot be read</source>
         <translation>無法讀取</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="163"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="165"/>
         <source>reading…</source>
         <translation>讀取中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="191"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="193"/>
         <source>read failed: %1</source>
         <translation>讀取失敗：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="216"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="218"/>
         <source>Drive %1: %2 is not known yet, and the allowed values depend on it.</source>
         <translation>驅動器 %1：%2 尚未得知，而允許值取決於此項。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="220"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="222"/>
         <source>drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="226"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="228"/>
         <source>The unit differs between the drives (%1); write them one at a time.</source>
         <translation>各驅動器的單位不同 (%1)；請逐台寫入。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="235"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="237"/>
         <source>Not allowed on drive %1 (%2): %3</source>
         <translation>驅動器 %1 (%2) 不允許：%3</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="242"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="244"/>
         <source>Not allowed on the communication group of drive %1: %2</source>
         <translation>驅動器 %1 的通訊群組不允許：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="247"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="249"/>
         <source>None of the selected drives is identified.</source>
         <translation>所選驅動器均未識別。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="261"/>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="313"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="263"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="315"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="264"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="266"/>
         <source>Allowed on %1</source>
         <translation>%1 的允許值</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="272"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="274"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="273"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="275"/>
         <source>Allowed on %1.</source>
         <translation>%1 的允許值。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="323"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>仍要在 %n 台驅動器上設定嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="322"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="324"/>
         <source>&amp;Set it</source>
         <translation>設定(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="342"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
         <source>Write %1 to machine number(s) %2</source>
         <translation>將 %1 寫入機號 %2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="344"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="346"/>
         <source>Nothing was written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="349"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
         <source>waiting…</source>
         <translation>等待中…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="353"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>正在將 %1 寫入 %n 台驅動器…</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="365"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>已於 %n 台驅動器中的 %1 台寫入並驗證。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="372"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="374"/>
         <source>writing…</source>
         <translation>寫入中…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="389"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
         <source>Written and verified</source>
         <translation>已寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="391"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
         <source>Written, not verified: %1</source>
         <translation>已寫入，未確認：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="392"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="394"/>
         <source>Written, not verified (cannot be read back)</source>
         <translation>已寫入，未驗證 (無法回讀)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="393"/>
+        <location filename="../ui/workspace/MultiDriveWriteDialog.cpp" line="395"/>
         <source>Failed: %1</source>
         <translation>失敗：%1</translation>
     </message>
@@ -9338,57 +9401,57 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::NameCommand</name>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="38"/>
+        <location filename="../cli/NameCommand.cpp" line="39"/>
         <source>Name a machine (&quot;Infeed conveyor 3&quot;) or show the names of the bus</source>
         <translation>為機器命名 (「Infeed conveyor 3」) 或顯示此匯流排的名稱</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="44"/>
+        <location filename="../cli/NameCommand.cpp" line="45"/>
         <source>error: name takes a machine number and one name; put a name with spaces in quotes: name 1 &quot;Infeed conveyor 3&quot;</source>
         <translation>錯誤：name 需要一個機號和一個名稱；含空格的名稱請加引號：name 1 &quot;Infeed conveyor 3&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="52"/>
+        <location filename="../cli/NameCommand.cpp" line="53"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="62"/>
+        <location filename="../cli/NameCommand.cpp" line="63"/>
         <source>No machine of this bus has a name yet; give one with: name ID &quot;TEXT&quot;</source>
         <translation>此匯流排的機器尚無名稱；請以下列方式命名：name ID &quot;TEXT&quot;</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="66"/>
+        <location filename="../cli/NameCommand.cpp" line="67"/>
         <source>name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="77"/>
+        <location filename="../cli/NameCommand.cpp" line="78"/>
         <source>error: &quot;%1&quot; is not a machine number 1–247</source>
         <translation>錯誤：「%1」不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="87"/>
+        <location filename="../cli/NameCommand.cpp" line="88"/>
         <source>Machine number %1 has no name.</source>
         <translation>機號 %1 沒有名稱。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="93"/>
+        <location filename="../cli/NameCommand.cpp" line="94"/>
         <source>error: %1 Nothing was changed.</source>
         <translation>錯誤：%1 未變更任何內容。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="106"/>
+        <location filename="../cli/NameCommand.cpp" line="107"/>
         <source>Machine number %1 has no name now.</source>
         <translation>機號 %1 現在沒有名稱。</translation>
     </message>
     <message>
-        <location filename="../cli/NameCommand.cpp" line="107"/>
+        <location filename="../cli/NameCommand.cpp" line="108"/>
         <source>%1 is named now; messages, files and scans show it.</source>
         <translation>%1 已命名；訊息、檔案與掃描都會顯示此名稱。</translation>
     </message>
@@ -9568,112 +9631,112 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ParameterInitBox</name>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="39"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="40"/>
         <source>Parameter initialisation</source>
         <translation>參數初始化</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="49"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="50"/>
         <source>Returns every setting of drive %1 to its factory default, including the communication settings: afterwards the drive may answer only at the default rate, and control priority goes back to its input terminals. The motor must be stopped. The consequences for this drive are listed before anything is sent.</source>
         <translation>將驅動器 %1 的所有設定恢復為出廠預設值，包括通訊設定：之後驅動器可能只以預設鮑率回應，且控制優先權會回到輸入端子。馬達必須停止。送出任何資料前，會先列出對此驅動器的影響。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="57"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="58"/>
         <source>&amp;Initialise all parameters of drive %1…</source>
         <translation>初始化驅動器 %1 的所有參數(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="59"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="60"/>
         <source>Asks first, naming the drive and what changes</source>
         <translation>會先詢問，並列出驅動器及變更內容</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="87"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="88"/>
         <source>Reading what the initialisation would change…</source>
         <translation>正在讀取初始化將變更的內容…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="111"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="112"/>
         <source>Afterwards:</source>
         <translation>之後：</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="116"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="117"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>此驅動器 %n 項未寫入的變更將被捨棄。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="122"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
         <source>Sent: %1 to machine %2 only.</source>
         <translation>已送出：%1，僅送往機號 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="123"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="124"/>
         <source>Sent: %1 to machine %2.</source>
         <translation>已送出：%1 至機號 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="127"/>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="132"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="133"/>
         <source>Initialise drive %1</source>
         <translation>初始化驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="128"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="129"/>
         <source>Reset every setting of %1 to its factory defaults?</source>
         <translation>要將 %1 的所有設定恢復為出廠預設值嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="142"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="143"/>
         <source>Cancelled; nothing was sent.</source>
         <translation>已取消；未送出任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="150"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="151"/>
         <source>Initialising drive %1…</source>
         <translation>正在初始化驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="159"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
         <source>Drive %1 did not confirm the initialisation: %2</source>
         <translation>驅動器 %1 未確認初始化：%2</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="160"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="161"/>
         <source>Nothing was sent: %1</source>
         <translation>未送出任何資料：%1</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="173"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="174"/>
         <source>&amp;Reconnect at %1 bit/s after the power-up</source>
         <translation>上電後以 %1 bit/s 重新連線(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="177"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="178"/>
         <source>Drive %1 initialised; reading its values again…</source>
         <translation>驅動器 %1 已初始化；正在重新讀取其值…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="183"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>驅動器 %1 已初始化；%n 個值無法回讀 (驅動器現在可能只以預設通訊設定回應)。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="187"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="188"/>
         <source>Drive %1 initialised to its factory defaults; values read again.</source>
         <translation>驅動器 %1 已初始化為出廠預設值；已重新讀取數值。</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="213"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="214"/>
         <source>Reconnecting at %1 bit/s in %2 s…</source>
         <translation>%2 s 後以 %1 bit/s 重新連線…</translation>
     </message>
     <message>
-        <location filename="../ui/workspace/ParameterInitBox.cpp" line="226"/>
+        <location filename="../ui/workspace/ParameterInitBox.cpp" line="227"/>
         <source>Reconnect at %1 bit/s from the Bus menu.</source>
         <translation>請從「匯流排」選單以 %1 bit/s 重新連線。</translation>
     </message>
@@ -10257,32 +10320,32 @@ Switching to &quot;%4&quot; hands these commands to the bus: the input terminals
 <context>
     <name>opentop::ProductionMode</name>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="37"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="39"/>
         <source>&amp;Production mode (end of line)</source>
         <translation>生產模式 (終檢)(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="40"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="42"/>
         <source>The operator screen of an end-of-line station; no parameter editing until you switch back (Ctrl+Shift+P)</source>
         <translation>終檢工站的作業員畫面；切換回來之前無法編輯參數 (Ctrl+Shift+P)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="43"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="45"/>
         <source>&amp;Full screen</source>
         <translation>全螢幕(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="52"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="54"/>
         <source>&amp;Station name…</source>
         <translation>工作站名稱(&amp;S)…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="53"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="55"/>
         <source>The name this end-of-line station records with every unit</source>
         <translation>本出廠檢測站記錄在每個單元上的名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="62"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="64"/>
         <source>%1
 
 No unit can be tested until results can be recorded. The station tries again by itself.</source>
@@ -10291,58 +10354,58 @@ No unit can be tested until results can be recorded. The station tries again by 
 可記錄結果之前，無法測試任何產品。工作站會自動重試。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="80"/>
-        <location filename="../ui/eol/ProductionMode.cpp" line="88"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="83"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="91"/>
         <source>Station name</source>
         <translation>工作站名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="81"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="84"/>
         <source>The name this station records with every unit (each station of a line needs its own):</source>
         <translation>本工作站記錄在每個單元上的名稱（同一產線的每個工作站需各有其名）：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="89"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="92"/>
         <source>A station needs a name.</source>
         <translation>工作站需要名稱。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="90"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="93"/>
         <source>A unit is being tested: change the name once it is finished.</source>
         <translation>正在檢測單元：請在完成後再變更名稱。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="107"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="110"/>
         <source>Production mode</source>
         <translation>生產模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="108"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="111"/>
         <source>A unit is being tested. Cancel it (Esc) or let it finish before switching back to engineering mode.</source>
         <translation>有產品正在測試中。請先取消 (Esc) 或等待測試完成，再切換回工程模式。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="61"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="63"/>
         <source>Results database</source>
         <translation>結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="121"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="124"/>
         <source>leave production mode</source>
         <translation>離開生產模式</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="168"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="171"/>
         <source>A unit is being tested</source>
         <translation>有產品正在測試中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="169"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="172"/>
         <source>Unit %1 is being tested. Cancel it and %2? Its motors are stopped first; the unit is recorded as aborted.</source>
         <translation>產品 %1 正在測試中。要取消測試並%2嗎？會先停止其馬達，並將此產品記錄為已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionMode.cpp" line="181"/>
+        <location filename="../ui/eol/ProductionMode.cpp" line="184"/>
         <source>cancelled to %1</source>
         <translation>因%1而取消</translation>
     </message>
@@ -10415,42 +10478,42 @@ No unit can be tested until results can be recorded. The station tries again by 
 <context>
     <name>opentop::ProductionView</name>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="54"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="56"/>
         <source>Open recipe…</source>
         <translation>開啟配方…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="55"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="57"/>
         <source>Per-unit values…</source>
         <translation>單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="60"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="63"/>
         <source>Recipe:</source>
         <translation>配方：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="80"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="84"/>
         <source>Now</source>
         <translation>目前</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="157"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
         <source>Unit %1: %2…</source>
         <translation>產品 %1：%2…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="191"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="195"/>
         <source>Recipe not usable</source>
         <translation>配方無法使用</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="192"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="196"/>
         <source>%1 cannot be run; nothing will be sent:
 
 %2</source>
@@ -10459,117 +10522,117 @@ No unit can be tested until results can be recorded. The station tries again by 
 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="213"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="217"/>
         <source>open another recipe</source>
         <translation>開啟其他配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="216"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="220"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="224"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="230"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="228"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="234"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="225"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="229"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; 版次 %2 — %n 台驅動器</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="241"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="246"/>
         <source>&lt;i&gt;none: open the product&apos;s recipe&lt;/i&gt;</source>
         <translation>&lt;i&gt;無：請開啟產品的配方&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="242"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="247"/>
         <source>Station %1 · results: %2 · per-unit values: %3</source>
         <translation>工站 %1 · 結果：%2 · 單台數值：%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>loaded</source>
         <translation>已載入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="244"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="250"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="114"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="118"/>
         <source>Unit %1: making the station&apos;s drives safe first…</source>
         <translation>單元 %1：先使工作站的驅動器進入安全狀態…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="278"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="287"/>
         <source>drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="279"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="288"/>
         <source>drive %1 (%2)</source>
         <translation>驅動器 %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="280"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="289"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="285"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="294"/>
         <source>Unit %1 — attempt %2</source>
         <translation>產品 %1 — 第 %2 次</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="307"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="316"/>
         <source>Kept on this station: the results server did not answer. It is sent by itself when the server answers.</source>
         <translation>已保存在本工作站：結果伺服器沒有回應。伺服器回應後會自動送出。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="351"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="361"/>
         <source>%1
 Recorded at %2, after the results database came back.</source>
         <translation>%1
 結果資料庫恢復後，已於 %2 記錄。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="156"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="286"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="305"/>
-        <location filename="../ui/eol/ProductionView.cpp" line="352"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="161"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="295"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="362"/>
         <source>Unit %1</source>
         <translation>產品 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="331"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="341"/>
         <source>Unit %1 ended %2, but its result is not in the results database: %3
 Nothing is tested until it is recorded. The station tries again by itself (next try at %4); keep the unit aside.</source>
         <translation>產品 %1 已結束（%2），但結果未寫入結果資料庫：%3
 記錄完成前不會進行任何測試。工作站會自動重試（下次 %4）；請將此產品放在一旁。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="313"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="322"/>
         <source>Motor not confirmed stopped</source>
         <translation>未確認馬達已停止</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ProductionView.cpp" line="314"/>
+        <location filename="../ui/eol/ProductionView.cpp" line="323"/>
         <source>These motors may still be turning; stop them before touching the unit:
 
 %1</source>
@@ -10780,12 +10843,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>保存後斷電重新上電仍會保留，馬達可能如實測般振盪或超調。按「拒絕」會寫回驅動器原本的增益。</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="94"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
         <source>Reject the gains</source>
         <translation>拒絕此增益</translation>
     </message>
     <message>
-        <location filename="../ui/tuning/ProposalFlow.cpp" line="95"/>
+        <location filename="../ui/tuning/ProposalFlow.cpp" line="96"/>
         <source>Store anyway</source>
         <translation>仍要保存</translation>
     </message>
@@ -10793,22 +10856,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::PtySimServer</name>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="52"/>
+        <location filename="../sim/PtySimServer.cpp" line="66"/>
         <source>cannot open a pseudo-terminal: %1</source>
         <translation>無法開啟虛擬終端機：%1</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="69"/>
+        <location filename="../sim/PtySimServer.cpp" line="112"/>
+        <source>%1 is in use by another simulator (PID %2); stop it first, or choose another path for --pty</source>
+        <translation>%1 正由另一個模擬器（PID %2）使用中；請先停止它，或為 --pty 選擇其他路徑</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="121"/>
+        <source>cannot create the lock file %1: %2</source>
+        <translation>無法建立鎖定檔 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../sim/PtySimServer.cpp" line="80"/>
         <source>%1 exists and is not a symlink; refusing to replace it</source>
         <translation>%1 已存在且不是符號連結；拒絕取代</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="75"/>
+        <location filename="../sim/PtySimServer.cpp" line="83"/>
         <source>cannot create the symlink %1 -&gt; %2</source>
         <translation>無法建立符號連結 %1 -&gt; %2</translation>
     </message>
     <message>
-        <location filename="../sim/PtySimServer.cpp" line="117"/>
+        <location filename="../sim/PtySimServer.cpp" line="162"/>
         <source>the port is plugged in: %1</source>
         <translation>連接埠已接上：%1</translation>
     </message>
@@ -10900,44 +10973,44 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeApproveButton</name>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="14"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="16"/>
         <source>Approve…</source>
         <translation>核准…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="19"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="21"/>
         <source>Approve the saved recipe for the line (an engineer): stations with users run only approved recipes</source>
         <translation>核准已儲存的配方供產線使用（工程師）：有使用者的工站只執行已核准的配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="33"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="41"/>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="43"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="65"/>
         <source>Approve recipe</source>
         <translation>核准配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="35"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
         <source>Save the recipe first: what is approved is the saved file&apos;s checksum.</source>
         <translation>請先儲存配方：核准的是已儲存檔案的校驗碼。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="37"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="39"/>
         <source>%1 cannot be approved: %2</source>
         <translation>%1 無法核准：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="42"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="44"/>
         <source>This station has no users: an approval names its approver. Set up users with opentop-cli eol user add.</source>
         <translation>此工站沒有使用者：核准須記名核准人。請以 opentop-cli eol user add 設定使用者。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="48"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="50"/>
         <source>approve %1 rev. %2</source>
         <translation>核准 %1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeApproveButton.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeApproveButton.cpp" line="66"/>
         <source>%1 rev. %2 is approved by %3: stations run it.</source>
         <translation>%1 版次 %2 已由 %3 核准：工站可執行。</translation>
     </message>
@@ -10963,170 +11036,170 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeChecker</name>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="61"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="62"/>
         <source> (for %1)</source>
         <translation> (適用於 %1)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="93"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="94"/>
         <source>the recipe names no product</source>
         <translation>配方未指定產品</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="95"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="96"/>
         <source>the recipe has no revision</source>
         <translation>配方沒有版次</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="97"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="98"/>
         <source>the recipe names no drive</source>
         <translation>配方未指定驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="104"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="111"/>
         <source>%1: machine number %2 is already position %3; every drive of a unit needs its own machine number</source>
         <translation>%1：機號 %2 已用於位置 %3；產品中的每台驅動器都需要各自的機號</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="126"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="133"/>
         <source>%1: unknown family &quot;%2&quot;; known: %3</source>
         <translation>%1：未知的系列 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="132"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="139"/>
         <source>%1: a %2 takes machine numbers %3–%4</source>
         <translation>%1：%2 的機號範圍為 %3–%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="145"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="152"/>
         <source>%1: the %2 has no variant &quot;%3&quot;; known: %4</source>
         <translation>%1：%2 沒有機型 &quot;%3&quot;；已知：%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="147"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="154"/>
         <source>none</source>
         <translation>無</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="149"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="156"/>
         <source>%1: variant &quot;%2&quot; is named twice</source>
         <translation>%1：機型 &quot;%2&quot; 重複指定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="157"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="164"/>
         <source>%1: variantProof &quot;%2&quot; is not known; use &quot;required&quot; or &quot;operator&quot; (or leave it out)</source>
         <translation>%1：variantProof「%2」無法識別；請用 &quot;required&quot; 或 &quot;operator&quot;（或省略）</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="162"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="169"/>
         <source>%1: variantProof &quot;operator&quot; needs exactly one allowed variant for the operator to confirm</source>
         <translation>%1：variantProof &quot;operator&quot; 需要剛好一個允許的機型供作業員確認</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="174"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="181"/>
         <source>%1: firmware version &quot;%2&quot; is not a version as the drive reports it (major.minor, e.g. &quot;1.5&quot;)</source>
         <translation>%1：韌體版本 &quot;%2&quot; 不是驅動器回報的版本格式 (major.minor，例如 &quot;1.5&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="187"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="194"/>
         <source>the %1 has no setting &quot;%2&quot;</source>
         <translation>%1 沒有設定 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="189"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="196"/>
         <source>%1 is not a setting a recipe can write</source>
         <translation>%1 不是配方可寫入的設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="191"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="198"/>
         <source>%1 decides how the drive communicates; a recipe cannot change it, or the station would lose the drive in the middle of the run</source>
         <translation>%1 決定驅動器的通訊方式；配方不能變更此設定，否則工站會在測試途中失去與驅動器的連線</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="211"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="218"/>
         <source>%1: setting %2</source>
         <translation>%1：設定 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="216"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="281"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="223"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="288"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="222"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="229"/>
         <source>%1 is given twice</source>
         <translation>%1 重複指定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="230"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="237"/>
         <source>%1: what it allows depends on %2, which the recipe does not set; add %2 to the settings</source>
         <translation>%1：其允許值取決於配方未設定的 %2；請將 %2 加入設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="239"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="246"/>
         <source>%1 decides what %2 allows; set %2 in the recipe too, or the drive may be left with a value that is no longer valid</source>
         <translation>%1 決定 %2 的允許值；請同時在配方中設定 %2，否則驅動器可能留下已不再有效的值</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="255"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="323"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="262"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="330"/>
         <source>%1: unit &quot;%2&quot;, but the drive&apos;s value is in &quot;%3&quot;</source>
         <translation>%1：單位為 &quot;%2&quot;，但驅動器的值以 &quot;%3&quot; 表示</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="276"/>
-        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="283"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
         <source>%1: per-unit value %2</source>
         <translation>%1：單台數值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="287"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="294"/>
         <source>%1 is given twice (as a setting or as a per-unit value)</source>
         <translation>%1 重複指定 (作為設定或單台數值)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="293"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="300"/>
         <source>%1: the range&apos;s lowest value %2 is above its highest value %3</source>
         <translation>%1：範圍的最小值 %2 大於最大值 %3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="314"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
         <source>%1: what it allows depends on %2, which the recipe does not set</source>
         <translation>%1：其允許值取決於配方未設定的 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="321"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="328"/>
         <source>%1 is not a number; a per-unit value needs a numeric setting</source>
         <translation>%1 不是數值；單台數值需要數值型設定</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="327"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="334"/>
         <source>%1: range %2–%3%4</source>
         <translation>%1：範圍 %2–%3%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="333"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="340"/>
         <source>%1 is outside what the drive allows: %2%3</source>
         <translation>%1 超出驅動器的允許範圍：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="345"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="352"/>
         <source>%1 includes values the drive does not allow; allowed: %2%3</source>
         <translation>%1 包含驅動器不允許的值；允許：%2%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="371"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="378"/>
         <source>%1: per-unit value %2: %3%4 is outside the recipe&apos;s range %5–%6%4</source>
         <translation>%1：單台數值 %2：%3%4 超出配方範圍 %5–%6%4</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="382"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="389"/>
         <source>%1: the recipe has no per-unit value %2</source>
         <translation>%1：配方中沒有單台數值 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeChecker.cpp" line="385"/>
+        <location filename="../model/eol/RecipeChecker.cpp" line="392"/>
         <source>the recipe has no drive at machine number %1</source>
         <translation>配方中沒有機號 %1 的驅動器</translation>
     </message>
@@ -11139,136 +11212,136 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>配方編輯器</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="61"/>
         <source>Revision:</source>
         <translation>版次：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
         <source>Product:</source>
         <translation>產品：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="63"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
         <source>Description:</source>
         <translation>說明：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="64"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="65"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="107"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
         <source>New from drives on the bus…</source>
         <translation>從匯流排上的驅動器新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="108"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
         <source>New from backup file…</source>
         <translation>從備份檔新建…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="109"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
         <source>Open…</source>
         <translation>開啟…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="110"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
         <source>Save</source>
         <translation>儲存</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="111"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="112"/>
         <source>Save as…</source>
         <translation>另存新檔…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="159"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="160"/>
         <source>%1: %2%3</source>
         <translation>%1：%2%3</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="162"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="163"/>
         <source> — %1</source>
         <translation> — %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="233"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="234"/>
         <source>Make a recipe from a golden unit&apos;s drives on the bus or its backup file, or open one.</source>
         <translation>由標準樣品在匯流排上的驅動器或其備份檔建立配方，或開啟既有配方。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="237"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="238"/>
         <source>the recipe is empty</source>
         <translation>配方為空</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="248"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="249"/>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="252"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="253"/>
         <source>The recipe passes check: it can be saved and run.</source>
         <translation>配方通過檢查：可儲存並執行。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n 個問題：修正之前無法儲存配方。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>配方未通過檢查 (%n 個問題)；未儲存任何資料</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="283"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="284"/>
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="295"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="296"/>
         <source>%1 is not an OpenTOP recipe file</source>
         <translation>%1 不是 OpenTOP 配方檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="302"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
         <source>Opened %1</source>
         <translation>已開啟 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="303"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="304"/>
         <source>Opened %1, which does not load as it is (%2). Saving checks it and signs it again.</source>
         <translation>已開啟 %1，但無法直接載入 (%2)。儲存時會檢查並重新簽署。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
         <source>Open recipe</source>
         <translation>開啟配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="325"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="326"/>
         <source>Recipes (*.json);;All files (*)</source>
         <translation>配方 (*.json);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="335"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="336"/>
         <source>Save recipe</source>
         <translation>儲存配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="337"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="338"/>
         <source>Recipes (*.json)</source>
         <translation>配方 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeEditor.cpp" line="342"/>
+        <location filename="../ui/eol/RecipeEditor.cpp" line="343"/>
         <source>Saved and signed: %1</source>
         <translation>已儲存並簽署：%1</translation>
     </message>
@@ -11276,12 +11349,12 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeFile</name>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="264"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="268"/>
         <source>%1 is larger than %2 MB, the most a recipe file may hold; not a recipe file</source>
         <translation>%1 大於配方檔上限 %2 MB；不是配方檔</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeFile.cpp" line="272"/>
+        <location filename="../model/eol/RecipeFile.cpp" line="276"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -11355,88 +11428,88 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeParser</name>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="47"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="48"/>
         <source>not a JSON file: %1 at byte %2</source>
         <translation>不是 JSON 檔：%1 (第 %2 位元組)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="51"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="52"/>
         <source>not an OpenTOP recipe file: the JSON is not an object</source>
         <translation>不是 OpenTOP 配方檔：JSON 不是物件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="74"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="78"/>
         <source>&quot;positions&quot;: the recipe names no drive</source>
         <translation>&quot;positions&quot;：配方未指定驅動器</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="79"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="83"/>
         <source>%1: must be an object</source>
         <translation>%1：必須是物件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="96"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="100"/>
         <source>not an OpenTOP recipe file (&quot;format&quot; is &quot;%1&quot;, not &quot;%2&quot;)</source>
         <translation>不是 OpenTOP 配方檔 (&quot;format&quot; 為 &quot;%1&quot;，而非 &quot;%2&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="98"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="102"/>
         <source>not an OpenTOP recipe file (no &quot;format&quot;: &quot;%1&quot;)</source>
         <translation>不是 OpenTOP 配方檔 (沒有 &quot;format&quot;: &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="103"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="107"/>
         <source>&quot;formatVersion&quot; must be a whole number from 1</source>
         <translation>&quot;formatVersion&quot; 必須是 1 以上的整數</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="105"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="109"/>
         <source>written by a newer OpenTOP (recipe format version %1); this version reads recipe format version %2</source>
         <translation>由較新版的 OpenTOP 寫入 (配方格式版本 %1)；此版本可讀取配方格式版本 %2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="111"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="115"/>
         <source>the recipe has no checksum (&quot;checksum&quot;: &quot;sha256:…&quot;); it was not written by OpenTOP or was changed afterwards</source>
         <translation>配方沒有檢查碼 (&quot;checksum&quot;: &quot;sha256:…&quot;)；並非由 OpenTOP 寫入，或寫入後曾被修改</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="117"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="121"/>
         <source>the recipe was changed after it was written (checksum mismatch); open and save it with OpenTOP to accept the change</source>
         <translation>配方寫入後曾被修改 (檢查碼不符)；請以 OpenTOP 開啟並儲存，以接受此變更</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="134"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="138"/>
         <source>%1: &quot;machineNumber&quot; must be a machine number 1–247</source>
         <translation>%1：&quot;machineNumber&quot; 必須是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="136"/>
-        <location filename="../model/eol/RecipeParser.cpp" line="213"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="140"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="217"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="181"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="185"/>
         <source>%1 (%2): &quot;value&quot; must be a number or a text</source>
         <translation>%1 (%2)：&quot;value&quot; 必須是數字或文字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="197"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="201"/>
         <source>%1 (%2): &quot;source&quot; must be &quot;csv&quot; or &quot;operator&quot;, not &quot;%3&quot;</source>
         <translation>%1 (%2)：&quot;source&quot; 必須是 &quot;csv&quot; 或 &quot;operator&quot;，而非 &quot;%3&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="210"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="214"/>
         <source>%1: unknown step type &quot;%2&quot;; known: %3</source>
         <translation>%1：未知的步驟類型 &quot;%2&quot;；已知：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="226"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="230"/>
         <source>%1: &quot;spno&quot; must be a running data number such as 2</source>
         <translation>%1：&quot;spno&quot; 必須是運轉資料編號，例如 2</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="239"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="241"/>
         <source>%1: &quot;direction&quot; must be &quot;cw&quot; or &quot;ccw&quot;</source>
         <translation>%1：&quot;direction&quot; 必須是 &quot;cw&quot; 或 &quot;ccw&quot;</translation>
     </message>
@@ -11461,62 +11534,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>%1：限值需要 &quot;lower&quot;、&quot;upper&quot; 或兩者</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="313"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="325"/>
         <source>&quot;retest&quot; must be an object</source>
         <translation>&quot;retest&quot; 必須是物件</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="322"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="334"/>
         <source>retest: &quot;maxAttempts&quot; must be a whole number from 0 (no limit) to 100</source>
         <translation>retest：&quot;maxAttempts&quot; 必須是 0 (不限) 到 100 的整數</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="332"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
         <source>retest: &quot;passedSerial&quot; must be technician, refuse or allow, not &quot;%1&quot;</source>
         <translation>retest：&quot;passedSerial&quot; 必須是 technician、refuse 或 allow，而非 &quot;%1&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="344"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="356"/>
         <source>%1: unknown key &quot;%2&quot;; allowed: %3</source>
         <translation>%1：未知的鍵 &quot;%2&quot;；允許：%3</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="358"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="370"/>
         <source>%1&quot;%2&quot; must be a non-empty text</source>
         <translation>%1&quot;%2&quot; 必須是非空的文字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="359"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
         <source>%1&quot;%2&quot; must be a text</source>
         <translation>%1&quot;%2&quot; 必須是文字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="371"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="383"/>
         <source>%1: &quot;%2&quot; must be a list of texts</source>
         <translation>%1：&quot;%2&quot; 必須是文字清單</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="374"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="386"/>
         <source>%1: &quot;%2&quot; must be a list of non-empty texts</source>
         <translation>%1：&quot;%2&quot; 必須是非空文字的清單</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="384"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="396"/>
         <source>%1: &quot;%2&quot; must be a number</source>
         <translation>%1：&quot;%2&quot; 必須是數字</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="410"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="422"/>
         <source>%1&quot;%2&quot; must be a list</source>
         <translation>%1&quot;%2&quot; 必須是清單</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="413"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="425"/>
         <source>%1&quot;%2&quot; has %3 entries; at most %4 are allowed</source>
         <translation>%1&quot;%2&quot; 有 %3 個項目；最多允許 %4 個</translation>
     </message>
     <message>
-        <location filename="../model/eol/RecipeParser.cpp" line="419"/>
+        <location filename="../model/eol/RecipeParser.cpp" line="431"/>
         <source>%1&quot;%2&quot;: every entry must be an object</source>
         <translation>%1&quot;%2&quot;：每個項目都必須是物件</translation>
     </message>
@@ -11524,141 +11597,141 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipePositionForm</name>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="124"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="125"/>
         <source>every variant of the family, e.g. dbu200, dbu400</source>
         <translation>此系列的所有機型，例如 dbu200, dbu400</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="126"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="127"/>
         <source>any firmware, e.g. 1.5, 1.6</source>
         <translation>任何韌體，例如 1.5, 1.6</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Setting</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Name</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="128"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="129"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Min</source>
         <translation>最小值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Max</source>
         <translation>最大值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="130"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="131"/>
         <source>Source</source>
         <translation>來源</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add per-unit value…</source>
         <translation>新增單台數值…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="136"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
         <source>Add setting…</source>
         <translation>新增設定…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="137"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="138"/>
         <source>Remove</source>
         <translation>移除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="150"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
         <source>Settings</source>
         <translation>設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="151"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
         <source>Per-unit values</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="152"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="153"/>
         <source>Test steps</source>
         <translation>測試步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="155"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
         <source>Machine number:</source>
         <translation>機號：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="156"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
         <source>Name:</source>
         <translation>名稱：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="157"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
         <source>Family:</source>
         <translation>系列：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="158"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
         <source>Allowed variants:</source>
         <translation>允許的機型：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="159"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="160"/>
         <source>Allowed firmware:</source>
         <translation>允許的韌體：</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="185"/>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="336"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="186"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="337"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="227"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
         <source>CSV file</source>
         <translation>CSV 檔</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="228"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="229"/>
         <source>typed by the operator</source>
         <translation>由作業員輸入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="278"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="279"/>
         <source>(unknown: %1)</source>
         <translation>(未知：%1)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a per-unit value</source>
         <translation>新增單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="341"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
         <source>Add a setting</source>
         <translation>新增設定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipePositionForm.cpp" line="342"/>
+        <location filename="../ui/eol/RecipePositionForm.cpp" line="343"/>
         <source>Setting:</source>
         <translation>設定：</translation>
     </message>
@@ -12027,92 +12100,92 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RecipeStepsEditor</name>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>Step</source>
         <translation>步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="47"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="48"/>
         <source>What it does</source>
         <translation>內容</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="55"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="56"/>
         <source>Add step</source>
         <translation>新增步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="60"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
         <source>Remove</source>
         <translation>刪除</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="61"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
         <source>Move up</source>
         <translation>上移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="62"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="63"/>
         <source>Move down</source>
         <translation>下移</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="92"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="93"/>
         <source>(unknown step: %1)</source>
         <translation>（未知步驟：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="215"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
         <source>No step selected</source>
         <translation>未選擇步驟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="216"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="217"/>
         <source>Add a step, or select one to edit it.</source>
         <translation>新增步驟，或選擇一個步驟進行編輯。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="222"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="223"/>
         <source>Step %1: %2</source>
         <translation>步驟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="253"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
         <source>CW</source>
         <translation>CW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="254"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="255"/>
         <source>CCW</source>
         <translation>CCW</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="246"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="247"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="280"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="281"/>
         <source>This step has no settings.</source>
         <translation>此步驟沒有設定項目。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="322"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="323"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="324"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="325"/>
         <source>(unknown: %1)</source>
         <translation>（未知：%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="334"/>
+        <location filename="../ui/eol/RecipeStepsEditor.cpp" line="335"/>
         <source>Parameter:</source>
         <translation>參數：</translation>
     </message>
@@ -12120,54 +12193,54 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::Reconnection</name>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="30"/>
+        <location filename="../ui/main/Reconnection.cpp" line="31"/>
         <source>&amp;Reconnect</source>
         <translation>重新連線(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="37"/>
+        <location filename="../ui/main/Reconnection.cpp" line="38"/>
         <source>Open the last connection again, with the same drives and page (Ctrl+R)</source>
         <translation>以相同的驅動器與頁面重新開啟上一次的連線 (Ctrl+R)</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="91"/>
+        <location filename="../ui/main/Reconnection.cpp" line="92"/>
         <source>Reconnecting to %1…</source>
         <translation>正在重新連線至 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="122"/>
+        <location filename="../ui/main/Reconnection.cpp" line="123"/>
         <source>Reconnected to %1: reading every drive again…</source>
         <translation>已重新連線至 %1：正在重新讀取所有驅動器…</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="175"/>
+        <location filename="../ui/main/Reconnection.cpp" line="176"/>
         <source>Reconnected to %1.</source>
         <translation>已重新連線至 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="199"/>
+        <location filename="../ui/main/Reconnection.cpp" line="200"/>
         <source>Reconnecting failed: %1</source>
         <translation>重新連線失敗：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="217"/>
-        <location filename="../ui/main/Reconnection.cpp" line="259"/>
+        <location filename="../ui/main/Reconnection.cpp" line="218"/>
+        <location filename="../ui/main/Reconnection.cpp" line="262"/>
         <source>Connection lost</source>
         <translation>連線中斷</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="223"/>
-        <location filename="../ui/main/Reconnection.cpp" line="262"/>
+        <location filename="../ui/main/Reconnection.cpp" line="226"/>
+        <location filename="../ui/main/Reconnection.cpp" line="267"/>
         <source>Reconnect</source>
         <translation>重新連線</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="263"/>
+        <location filename="../ui/main/Reconnection.cpp" line="268"/>
         <source>Go on anyway</source>
         <translation>仍要繼續</translation>
     </message>
     <message>
-        <location filename="../ui/main/Reconnection.cpp" line="264"/>
+        <location filename="../ui/main/Reconnection.cpp" line="269"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -12337,118 +12410,118 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreCommand</name>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="36"/>
+        <location filename="../cli/RestoreCommand.cpp" line="37"/>
         <source>Show what a backup file would change on its drives; with --yes write it, verified</source>
         <translation>顯示備份檔將在驅動器上變更的內容；加上 --yes 則寫入並驗證</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="41"/>
+        <location filename="../cli/RestoreCommand.cpp" line="42"/>
         <source>Restore only these drives of the file, e.g. 1,5-7.</source>
         <translation>只還原檔案中的這些驅動器，例如 1,5-7。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="42"/>
+        <location filename="../cli/RestoreCommand.cpp" line="43"/>
         <source>LIST</source>
         <translation>LIST</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="43"/>
+        <location filename="../cli/RestoreCommand.cpp" line="44"/>
         <source>Read the drives and show the plan; write nothing.</source>
         <translation>讀取驅動器並顯示還原計畫；不寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="44"/>
+        <location filename="../cli/RestoreCommand.cpp" line="45"/>
         <source>Write the plan (without it restore only shows it).</source>
         <translation>寫入還原計畫 (未指定時 restore 只會顯示計畫)。</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="54"/>
+        <location filename="../cli/RestoreCommand.cpp" line="55"/>
         <source>%1: the drive&apos;s settings were not read; nothing compared, nothing written</source>
         <translation>%1：未讀取驅動器的設定；未比較，也未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="60"/>
-        <location filename="../cli/RestoreCommand.cpp" line="98"/>
+        <location filename="../cli/RestoreCommand.cpp" line="61"/>
+        <location filename="../cli/RestoreCommand.cpp" line="99"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>file value</source>
         <translation>檔案值</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="65"/>
+        <location filename="../cli/RestoreCommand.cpp" line="66"/>
         <source>device value</source>
         <translation>裝置值</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="66"/>
+        <location filename="../cli/RestoreCommand.cpp" line="67"/>
         <source>action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="80"/>
+        <location filename="../cli/RestoreCommand.cpp" line="81"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 項已寫入並驗證，%2 項未變更，%3 項失敗，%4 項未執行</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="86"/>
+        <location filename="../cli/RestoreCommand.cpp" line="87"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 項未確認</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="88"/>
+        <location filename="../cli/RestoreCommand.cpp" line="89"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已寫入 %2 個保存指令中的 %1 個</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="123"/>
+        <location filename="../cli/RestoreCommand.cpp" line="124"/>
         <source>error: name one backup file: restore FILE [--ids LIST] [--yes]</source>
         <translation>錯誤：請指定一個備份檔：restore FILE [--ids LIST] [--yes]</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="137"/>
+        <location filename="../cli/RestoreCommand.cpp" line="138"/>
         <source>error: --ids: %1</source>
         <translation>錯誤：--ids：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="142"/>
+        <location filename="../cli/RestoreCommand.cpp" line="144"/>
         <source>error: %1 holds no drive with machine number %2; it holds %3</source>
         <translation>錯誤：%1 中沒有機號 %2 的驅動器；檔案中有 %3</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="163"/>
+        <location filename="../cli/RestoreCommand.cpp" line="165"/>
         <source>error: %1; nothing written</source>
         <translation>錯誤：%1；未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="181"/>
+        <location filename="../cli/RestoreCommand.cpp" line="184"/>
         <source>error: %1: %2</source>
         <translation>錯誤：%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="199"/>
+        <location filename="../cli/RestoreCommand.cpp" line="205"/>
         <source>%1: not attempted</source>
         <translation>%1：未執行</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="228"/>
+        <location filename="../cli/RestoreCommand.cpp" line="234"/>
         <source>dry run: nothing written</source>
         <translation>僅預覽：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/RestoreCommand.cpp" line="229"/>
+        <location filename="../cli/RestoreCommand.cpp" line="235"/>
         <source>nothing written; add --yes to write</source>
         <translation>未寫入任何資料；加上 --yes 才會寫入</translation>
     </message>
@@ -12496,161 +12569,161 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <translation>檔案：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="59"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
         <source>Read the drives and show what would change; writes nothing</source>
         <translation>讀取驅動器並顯示將變更的內容；不寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="60"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
         <source>Write the previewed changes, each verified by reading it back</source>
         <translation>寫入預覽的變更，每項皆以回讀驗證</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="61"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
         <source>Stop after the write in progress has been verified</source>
         <translation>目前進行中的寫入驗證完成後停止</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="62"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
         <source>Save the report as text, or as CSV when the name ends in .csv</source>
         <translation>將報告儲存為文字檔；檔名以 .csv 結尾時儲存為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="63"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="64"/>
         <source>C&amp;lose</source>
         <translation>關閉(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="112"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="113"/>
         <source>%1: no such file</source>
         <translation>%1：檔案不存在</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="117"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
         <source>the file could not be read</source>
         <translation>無法讀取檔案</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="118"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="119"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="179"/>
         <source>Refused, nothing will be written: %1</source>
         <translation>已拒絕，不會寫入任何資料：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="123"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="124"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>檔案中有 %n 台驅動器。請選擇要還原的項目，然後按「預覽」。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="145"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="146"/>
         <source>Refused, nothing written:</source>
         <translation>已拒絕，未寫入任何資料：</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="147"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="148"/>
         <source>Drive %1 from %2: %3</source>
         <translation>驅動器 %1 (來自 %2)：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="177"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="178"/>
         <source>Choose a backup file first.</source>
         <translation>請先選擇備份檔。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="193"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="194"/>
         <source>Nothing was read or written: %1.</source>
         <translation>未讀取也未寫入任何資料：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Reading drive %1…</source>
         <translation>正在讀取驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="85"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="86"/>
         <source>Writing drive %1…</source>
         <translation>正在寫入驅動器 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="93"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="94"/>
         <source>drive %1: %2 (%v of %m)</source>
         <translation>驅動器 %1：%2 (%v / %m)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="228"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="229"/>
         <source>Stopping after the write in progress has been verified…</source>
         <translation>目前進行中的寫入驗證完成後將停止…</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="243"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="324"/>
-        <location filename="../ui/files/RestoreDialog.cpp" line="329"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="244"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="325"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="330"/>
         <source>Drive %1: %2</source>
         <translation>驅動器 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="246"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="247"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n 項設定待寫入</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="253"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="254"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="256"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
         <source>Nothing written yet. Write to drives to apply.</source>
         <translation>尚未寫入任何資料。請按「寫入驅動器」以套用。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="257"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="258"/>
         <source>Nothing written.</source>
         <translation>未寫入任何資料。</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="305"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
         <source>Restore from backup file</source>
         <translation>從備份檔還原</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="306"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="307"/>
         <source>OpenTOP backups (*.json);;All files (*)</source>
         <translation>OpenTOP 備份檔 (*.json);;所有檔案 (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/files/RestoreDialog.cpp" line="332"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="333"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>要將 %n 項設定寫入驅動器 %1，並逐項以回讀驗證嗎？</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>Write to drives</source>
         <translation>寫入驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="337"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="338"/>
         <source>&amp;Write</source>
         <translation>寫入(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="342"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
         <source>Save restore report</source>
         <translation>儲存還原報告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="343"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="344"/>
         <source>Text (*.txt);;CSV (*.csv)</source>
         <translation>文字檔 (*.txt);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreDialog.cpp" line="348"/>
+        <location filename="../ui/files/RestoreDialog.cpp" line="349"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -12826,62 +12899,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RestoreReport</name>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="17"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="18"/>
         <source>%1 written and verified, %2 unchanged, %3 failed, %4 not attempted</source>
         <translation>%1 項已寫入並驗證，%2 項未變更，%3 項失敗，%4 項未執行</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="23"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="24"/>
         <source>, %1 not confirmed</source>
         <translation>，%1 項未確認</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="25"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="26"/>
         <source>; %1 of %2 store commands written</source>
         <translation>；已寫入 %2 個保存指令中的 %1 個</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>OpenTOP restore report</source>
         <translation>OpenTOP 還原報告</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="34"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
         <source>File: %1</source>
         <translation>檔案：%1</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="35"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="36"/>
         <source>Date: %1 (UTC)</source>
         <translation>日期：%1 (UTC)</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Written to the drives</source>
         <translation>已寫入驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="38"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="39"/>
         <source>Preview only: nothing written</source>
         <translation>僅預覽：未寫入任何資料</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="41"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="42"/>
         <source>Machine number %1 from %2: %3</source>
         <translation>機號 %1 (來自 %2)：%3</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="52"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="53"/>
         <source>  %1: %2</source>
         <translation>  %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="54"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="55"/>
         <source>  %1: file %2, drive %3: %4</source>
         <translation>  %1：檔案 %2，驅動器 %3：%4</translation>
     </message>
     <message>
-        <location filename="../ui/files/RestoreReport.cpp" line="60"/>
+        <location filename="../ui/files/RestoreReport.cpp" line="61"/>
         <source>  Note: %1</source>
         <translation>  注意：%1</translation>
     </message>
@@ -13066,148 +13139,148 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultsBrowser</name>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="60"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="61"/>
         <source>End-of-line results</source>
         <translation>終檢結果</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Started</source>
         <translation>開始時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Recipe</source>
         <translation>配方</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="63"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
         <source>Station</source>
         <translation>工站</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="64"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
         <source>Time (s)</source>
         <translation>時間 (s)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="65"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="66"/>
         <source>First failure</source>
         <translation>首個不合格項目</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="82"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="84"/>
         <source>Export CSV…</source>
         <translation>匯出 CSV…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="83"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="85"/>
         <source>Certificate PDF…</source>
         <translation>測試證書 PDF…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="134"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="136"/>
         <source>There is no results database at %1 yet: a station makes it when it records its first unit.</source>
         <translation>%1 尚無結果資料庫：工站記錄第一台產品時會建立。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="140"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="142"/>
         <source>Opening the results database %1…</source>
         <translation>正在開啟結果資料庫 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="152"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="154"/>
         <source>Results database %1</source>
         <translation>結果資料庫 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="176"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="178"/>
         <source>Searching…</source>
         <translation>正在搜尋…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="187"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="274"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="189"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="278"/>
         <source>the results database is not open</source>
         <translation>結果資料庫未開啟</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="218"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="220"/>
         <source>%1 rev. %2</source>
         <translation>%1 版次 %2</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="222"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="224"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="236"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="239"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>%n 台產品：合格 %1、不合格 %2、工站錯誤 %3 · %4</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="250"/>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="302"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="253"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="306"/>
         <source>no unit is selected</source>
         <translation>未選擇產品</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="254"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="258"/>
         <source>Reading unit %1…</source>
         <translation>正在讀取產品 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="303"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="307"/>
         <source>the unit&apos;s record is still being read</source>
         <translation>仍在讀取該產品的記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>Export units as CSV</source>
         <translation>將產品匯出為 CSV</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="312"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="316"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV 檔 (*.csv)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>已將 %n 台產品寫入 %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="328"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="332"/>
         <source>Save certificate</source>
         <translation>儲存測試證書</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="329"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="333"/>
         <source>PDF files (*.pdf)</source>
         <translation>PDF 檔 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/ResultsBrowser.cpp" line="334"/>
+        <location filename="../ui/eol/ResultsBrowser.cpp" line="338"/>
         <source>Certificate written to %1</source>
         <translation>測試證書已寫入 %1</translation>
     </message>
@@ -13355,62 +13428,62 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::RunCommand</name>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="49"/>
+        <location filename="../cli/RunCommand.cpp" line="50"/>
         <source>Test run: start, stop, direction, running data, hold/free, speed (needs --yes)</source>
         <translation>試運轉：啟動、停止、方向、運轉資料、保持/釋放、速度 (需要 --yes)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="54"/>
+        <location filename="../cli/RunCommand.cpp" line="55"/>
         <source>Send the command (it moves or stops a motor).</source>
         <translation>送出指令 (會使馬達運轉或停止)。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="64"/>
+        <location filename="../cli/RunCommand.cpp" line="65"/>
         <source>error: usage: %1 (one machine number; a negative speed after --)</source>
         <translation>錯誤：用法：%1 (一個機號；負速度請放在 -- 之後)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="72"/>
-        <location filename="../cli/RunCommand.cpp" line="77"/>
-        <location filename="../cli/RunCommand.cpp" line="82"/>
-        <location filename="../cli/RunCommand.cpp" line="144"/>
+        <location filename="../cli/RunCommand.cpp" line="73"/>
+        <location filename="../cli/RunCommand.cpp" line="78"/>
+        <location filename="../cli/RunCommand.cpp" line="83"/>
+        <location filename="../cli/RunCommand.cpp" line="145"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="87"/>
+        <location filename="../cli/RunCommand.cpp" line="88"/>
         <source>Would send to machine number %1: %2
 This moves or stops a motor: add --yes to send it.</source>
         <translation>將送往機號 %1：%2
 此操作會使馬達運轉或停止：加上 --yes 才會送出。</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="108"/>
+        <location filename="../cli/RunCommand.cpp" line="109"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="136"/>
+        <location filename="../cli/RunCommand.cpp" line="137"/>
         <source>Sent to machine number %1: %2</source>
         <translation>已送往機號 %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="138"/>
+        <location filename="../cli/RunCommand.cpp" line="139"/>
         <source>Sent to machine number %1, executed also by %2 (communication group): %3</source>
         <translation>已送往機號 %1，%2 也會執行 (通訊群組)：%3</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="174"/>
+        <location filename="../cli/RunCommand.cpp" line="175"/>
         <source>(not read: %1)</source>
         <translation>(未讀取：%1)</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="183"/>
+        <location filename="../cli/RunCommand.cpp" line="184"/>
         <source>State of machine number %1:</source>
         <translation>機號 %1 的狀態：</translation>
     </message>
     <message>
-        <location filename="../cli/RunCommand.cpp" line="199"/>
+        <location filename="../cli/RunCommand.cpp" line="200"/>
         <source>Communication group of %1, read after the command:</source>
         <translation>%1 的通訊群組，指令後讀取：</translation>
     </message>
@@ -13647,7 +13720,7 @@ This moves or stops a motor: add --yes to send it.</source>
     <message>
         <location filename="../ui/pages/RunningDataPage.cpp" line="115"/>
         <location filename="../ui/pages/RunningDataPage.cpp" line="315"/>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="321"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="322"/>
         <source>Initialize SPno%1</source>
         <translation>初始化 SPno%1</translation>
     </message>
@@ -13699,24 +13772,24 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>要將驅動器 %2 的運轉資料 SPno%1 恢復為這些出廠預設值嗎？</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="327"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="328"/>
         <source>Initializing SPno%1…</source>
         <translation>正在初始化 SPno%1…</translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="342"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="343"/>
         <source>SPno%1 was not initialized: %2</source>
         <translation>SPno%1 未初始化：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/pages/RunningDataPage.cpp" line="358"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="359"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 已初始化；%n 個值無法回讀</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/pages/RunningDataPage.cpp" line="360"/>
+        <location filename="../ui/pages/RunningDataPage.cpp" line="361"/>
         <source>SPno%1 initialized to its factory defaults</source>
         <translation>SPno%1 已初始化為出廠預設值</translation>
     </message>
@@ -13978,32 +14051,43 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SerialEntry</name>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="27"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
         <source>Scan or type the serial number, then Enter</source>
         <translation>掃描或輸入序號後按 Enter</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="28"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="29"/>
         <source>Cancel unit (Esc)</source>
         <translation>取消此產品 (Esc)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="85"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="73"/>
+        <source>Serial number NOT taken: %1.</source>
+        <translation>序號未被接受：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
         <source>Serial %1 was NOT taken: unit %2 is being tested. Scan it again once its verdict shows.</source>
         <translation>序號 %1 未被接受：單元 %2 正在檢測中。請在其判定結果顯示後再掃描一次。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="87"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="104"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="106"/>
         <source>another</source>
         <translation>另一個單元</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="101"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="105"/>
+        <source>A serial number was NOT taken: %1. Unit %2 is being tested.</source>
+        <translation>序號未被接受：%1。單元 %2 正在檢測中。</translation>
+    </message>
+    <message>
+        <location filename="../ui/eol/SerialEntry.cpp" line="122"/>
         <source>Per-unit value</source>
         <translation>單台數值</translation>
     </message>
     <message>
-        <location filename="../ui/eol/SerialEntry.cpp" line="102"/>
+        <location filename="../ui/eol/SerialEntry.cpp" line="123"/>
         <source>Drive %1: %2 (%3–%4 %5)</source>
         <translation>驅動器 %1：%2 (%3–%4 %5)</translation>
     </message>
@@ -14100,112 +14184,185 @@ This moves or stops a motor: add --yes to send it.</source>
     </message>
 </context>
 <context>
+    <name>opentop::SerialRule</name>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="65"/>
+        <source>no serial number</source>
+        <translation>無序號</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="67"/>
+        <source>a serial number has at most %1 characters; this one has %2</source>
+        <translation>序號最多 %1 個字元；此序號有 %2 個</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="71"/>
+        <source>a serial number may not hold control characters, format characters or line breaks; character %1 is %2</source>
+        <translation>序號不可包含控制字元、格式字元或換行；第 %1 個字元為 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="75"/>
+        <source>serial number &quot;%1&quot; begins or ends with white space; a serial number is tested exactly as given</source>
+        <translation>序號 &quot;%1&quot; 的開頭或結尾有空白；序號會完全依輸入內容檢測</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="85"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2</source>
+        <translation>序號 &quot;%1&quot; 不符合配方的序號格式 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="87"/>
+        <source>serial number &quot;%1&quot; does not match the recipe&apos;s serial pattern %2 (e.g. %3)</source>
+        <translation>序號 &quot;%1&quot; 不符合配方的序號格式 %2（例如 %3）</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="104"/>
+        <source>&quot;serialPattern&quot; has %1 characters; at most %2 are allowed</source>
+        <translation>&quot;serialPattern&quot; 有 %1 個字元；最多允許 %2 個</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="108"/>
+        <source>&quot;serialPattern&quot; may not hold control characters, format characters or line breaks (no serial number holds one); character %1 is %2</source>
+        <translation>&quot;serialPattern&quot; 不可包含控制字元、格式字元或換行（序號不會包含這些字元）；第 %1 個字元為 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="115"/>
+        <source>&quot;serialPattern&quot; %1 is not a valid regular expression: %2 at character %3</source>
+        <translation>&quot;serialPattern&quot; %1 不是有效的正規表示式：第 %3 個字元處 %2</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="121"/>
+        <source>&quot;serialPattern&quot; %1 cannot be matched against a whole serial number</source>
+        <translation>&quot;serialPattern&quot; %1 無法與整個序號比對</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="127"/>
+        <source>&quot;serialExample&quot; needs a &quot;serialPattern&quot; that it matches</source>
+        <translation>&quot;serialExample&quot; 需要一個與其相符的 &quot;serialPattern&quot;</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="130"/>
+        <source>&quot;serialExample&quot;: %1</source>
+        <translation>&quot;serialExample&quot;：%1</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="140"/>
+        <source>any, at most %1 characters</source>
+        <translation>任意，最多 %1 個字元</translation>
+    </message>
+    <message>
+        <location filename="../model/eol/SerialRule.cpp" line="143"/>
+        <source>%1 (e.g. %2)</source>
+        <translation>%1（例如 %2）</translation>
+    </message>
+</context>
+<context>
     <name>opentop::SetCommand</name>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="42"/>
+        <location filename="../cli/SetCommand.cpp" line="43"/>
         <source>Write parameters by name, validated, read back and verified</source>
         <translation>依名稱寫入參數，經檢查、回讀並驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="52"/>
+        <location filename="../cli/SetCommand.cpp" line="53"/>
         <source>Write registers by address: ADDR=VALUE (repeatable; VALUE,VALUE... with --fc 16).</source>
         <translation>依位址寫入暫存器：ADDR=VALUE (可重複指定；搭配 --fc 16 時可寫 VALUE,VALUE...)。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="53"/>
+        <location filename="../cli/SetCommand.cpp" line="54"/>
         <source>ADDR=VALUE</source>
         <translation>ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>Function code for --raw writes: 6 (default) or 16.</source>
         <translation>--raw 寫入使用的功能碼：6 (預設) 或 16。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="54"/>
+        <location filename="../cli/SetCommand.cpp" line="55"/>
         <source>FC</source>
         <translation>FC</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="63"/>
+        <location filename="../cli/SetCommand.cpp" line="64"/>
         <source>error: usage: set ID NAME=VALUE... (e.g. set 1 spno2.accel=2.5), or set ID --raw ADDR=VALUE</source>
         <translation>錯誤：用法：set ID NAME=VALUE... (例如 set 1 spno2.accel=2.5)，或 set ID --raw ADDR=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="75"/>
+        <location filename="../cli/SetCommand.cpp" line="76"/>
         <source>error: &quot;%1&quot; is not NAME=VALUE</source>
         <translation>錯誤：&quot;%1&quot; 不是 NAME=VALUE 格式</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="82"/>
-        <location filename="../cli/SetCommand.cpp" line="91"/>
-        <location filename="../cli/SetCommand.cpp" line="106"/>
+        <location filename="../cli/SetCommand.cpp" line="83"/>
+        <location filename="../cli/SetCommand.cpp" line="92"/>
+        <location filename="../cli/SetCommand.cpp" line="108"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="104"/>
-        <location filename="../cli/SetCommand.cpp" line="114"/>
+        <location filename="../cli/SetCommand.cpp" line="105"/>
+        <location filename="../cli/SetCommand.cpp" line="117"/>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="49"/>
+        <location filename="../cli/SetCommand.cpp" line="50"/>
         <source>Confirm commands that move a motor, reset, erase, initialise or store, and setting the serial configuration lock.</source>
         <translation>確認會使馬達運轉、重置、清除、初始化或保存的指令，以及序列組態鎖定的設定。</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="146"/>
+        <location filename="../cli/SetCommand.cpp" line="149"/>
         <source>next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="148"/>
+        <location filename="../cli/SetCommand.cpp" line="151"/>
         <source>next: opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (the factory line settings)</source>
         <translation>下一步：opentop-cli --baud %1 --parity %2 --stop-bits %3 ... (出廠通訊設定)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Parameter</source>
         <translation>參數</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="193"/>
+        <location filename="../cli/SetCommand.cpp" line="196"/>
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="199"/>
+        <location filename="../cli/SetCommand.cpp" line="202"/>
         <source>written, verified</source>
         <translation>已寫入，已驗證</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="201"/>
+        <location filename="../cli/SetCommand.cpp" line="204"/>
         <source>written, not verified: %1</source>
         <translation>已寫入，未確認：%1</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="202"/>
+        <location filename="../cli/SetCommand.cpp" line="205"/>
         <source>written (command, not readable)</source>
         <translation>已寫入 (指令，不可讀取)</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="204"/>
+        <location filename="../cli/SetCommand.cpp" line="207"/>
         <source>not confirmed (%1): the drive may or may not hold it; &quot;get&quot; reads it back</source>
         <translation>未確認 (%1)：驅動器可能已保有此值，也可能沒有；可用 &quot;get&quot; 回讀</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="215"/>
+        <location filename="../cli/SetCommand.cpp" line="218"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/SetCommand.cpp" line="222"/>
+        <location filename="../cli/SetCommand.cpp" line="225"/>
         <source>note: the drive uses %1 from its next power-up on: switch the drive off and on, then connect with the new setting (--baud, --parity)</source>
         <translation>注意：驅動器自下次上電起使用 %1：請將驅動器斷電再上電，然後以新設定 (--baud、--parity) 連線</translation>
     </message>
@@ -14416,17 +14573,17 @@ This moves or stops a motor: add --yes to send it.</source>
         <translation>opentop-sim：--defect %1 (%2@%1)：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="176"/>
+        <location filename="../sim/SimApp.cpp" line="177"/>
         <source>the port is unplugged already</source>
         <translation>連接埠已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="178"/>
+        <location filename="../sim/SimApp.cpp" line="179"/>
         <source>unplugged</source>
         <translation>已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="211"/>
+        <location filename="../sim/SimApp.cpp" line="212"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -15280,64 +15437,64 @@ from stdin (type help). Stops on SIGINT, SIGTERM or quit.
 <context>
     <name>opentop::StationActions</name>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="22"/>
+        <location filename="../ui/eol/StationActions.cpp" line="24"/>
         <source>Reset alarm and test again</source>
         <translation>重置警報並重新測試</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="23"/>
+        <location filename="../ui/eol/StationActions.cpp" line="25"/>
         <source>Technician: test again…</source>
         <translation>技術員：重新測試…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="47"/>
+        <location filename="../ui/eol/StationActions.cpp" line="50"/>
         <source>A technician may allow unit %1 to be tested again.</source>
         <translation>技術員可允許單元 %1 重新測試。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="54"/>
+        <location filename="../ui/eol/StationActions.cpp" line="57"/>
         <source>Resetting the alarm of machine number %1…</source>
         <translation>正在重置機號 %1 的警報…</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="63"/>
+        <location filename="../ui/eol/StationActions.cpp" line="66"/>
         <source>The alarm is not cleared; nothing was started:
 %1</source>
         <translation>警報未解除；未開始任何測試：
 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="73"/>
+        <location filename="../ui/eol/StationActions.cpp" line="76"/>
         <source>reset the alarm</source>
         <translation>警報重置</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="79"/>
+        <location filename="../ui/eol/StationActions.cpp" line="82"/>
         <source>serial %1</source>
         <translation>序號 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="88"/>
+        <location filename="../ui/eol/StationActions.cpp" line="91"/>
         <source>test serial %1 again</source>
         <translation>重新測試序號 %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="102"/>
+        <location filename="../ui/eol/StationActions.cpp" line="105"/>
         <source>An alarm was active on machine number %1 before the test: nothing was written. Reset it (the drive&apos;s own reset; one that needs a power cycle says so) and the unit is tested again.</source>
         <translation>測試前機號 %1 已有警報發生：未寫入任何資料。請重置警報（使用驅動器本身的重置功能；需要斷電重新上電的警報會另行提示），產品即會重新測試。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="131"/>
+        <location filename="../ui/eol/StationActions.cpp" line="134"/>
         <source>(no name)</source>
         <translation>（未填姓名）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="133"/>
+        <location filename="../ui/eol/StationActions.cpp" line="136"/>
         <source>Test again</source>
         <translation>重新測試</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationActions.cpp" line="134"/>
+        <location filename="../ui/eol/StationActions.cpp" line="137"/>
         <source>%1
 
 Test unit %2 again? It is recorded as allowed by %3.</source>
@@ -15372,22 +15529,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationFigures</name>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="25"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="27"/>
         <source>This shift: no figures yet (%1)</source>
         <translation>本班別：尚無數據（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="26"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="28"/>
         <source>results database not read</source>
         <translation>尚未讀取結果資料庫</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="29"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="31"/>
         <source>This shift: tested %1 · passed %2 · failed %3 · station errors %4 · %5</source>
         <translation>本班別：已測 %1 · 合格 %2 · 不合格 %3 · 工站錯誤 %4 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationFigures.cpp" line="35"/>
+        <location filename="../ui/eol/StationFigures.cpp" line="39"/>
         <source>This station, this recipe version, since %1 (read %2). The same figures: %3</source>
         <translation>本工站、此配方版本，自 %1 起（讀取於 %2）。以指令查看相同數據：%3</translation>
     </message>
@@ -15395,52 +15552,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="46"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
         <source>Operator:</source>
         <translation>作業員:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="50"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>user name</source>
         <translation>使用者名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="55"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
         <source>password</source>
         <translation>密碼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
         <source>Log in</source>
         <translation>登入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
         <source>Log in:</source>
         <translation>登入:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="63"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
         <source>Log out</source>
         <translation>登出</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="109"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
         <source>Not logged in: %1</source>
         <translation>未登入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>已登入：&lt;b&gt;%1&lt;/b&gt;（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="136"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>尚未設定使用者：任何人都可執行、編輯和離開；請以 opentop-cli eol user add 設定使用者</translation>
     </message>
@@ -15448,24 +15605,24 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationNotice</name>
     <message numerus="yes">
-        <location filename="../ui/eol/StationNotice.cpp" line="29"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="31"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>本工作站保存了 %n 筆結果，尚未存入結果資料庫：%1。資料庫回應後會依序自動送出。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="33"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="35"/>
         <source>it does not answer</source>
         <translation>資料庫沒有回應</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="36"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="38"/>
         <source>Unit %1 (begun %2) was not finished: the station stopped during its test. It is recorded as interrupted; test it again.</source>
         <translation>單元 %1（開始於 %2）未完成：工作站在檢測中停止。已記錄為「中斷」，請重新檢測。</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationNotice.cpp" line="42"/>
+        <location filename="../ui/eol/StationNotice.cpp" line="44"/>
         <source>Making the recipe&apos;s drives safe: reading each, stopping one left running, giving control back to their inputs…</source>
         <translation>正在使配方的驅動器進入安全狀態：逐一讀取、停止仍在運轉者、將控制權交還其輸入端子…</translation>
     </message>
@@ -15965,7 +16122,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::TcpSimServer</name>
     <message>
-        <location filename="../sim/TcpSimServer.cpp" line="47"/>
+        <location filename="../sim/TcpSimServer.cpp" line="36"/>
         <source>cannot listen on %1:%2: %3</source>
         <translation>無法在 %1:%2 上監聽：%3</translation>
     </message>
@@ -16026,7 +16183,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>&lt;b&gt;機號 %1 試運轉&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="53"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="54"/>
         <source>Machine number %1 has not been identified as a drive of a known family; a test run needs one.</source>
         <translation>機號 %1 尚未識別為已知系列的驅動器；試運轉需要已識別的驅動器。</translation>
     </message>
@@ -16076,42 +16233,42 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>將運轉、停止、方向與速度選擇交還給驅動器的輸入端子</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="160"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="161"/>
         <source>Cannot read %1 to check that the drive takes motion commands: %2</source>
         <translation>無法讀取 %1 以確認驅動器是否接受運轉指令：%2</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="196"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="197"/>
         <source>Not started: the variant of %1 was not given.</source>
         <translation>未啟動：未指定 %1 的機型。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="203"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="204"/>
         <source>Reading what the start will run…</source>
         <translation>正在讀取啟動後的運轉內容…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="219"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="220"/>
         <source>Start the motor</source>
         <translation>啟動馬達</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="233"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="234"/>
         <source>Sending %1…</source>
         <translation>正在送出 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="262"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="263"/>
         <source>Not every drive of its communication group runs: see below.</source>
         <translation>通訊群組中並非所有驅動器都在運轉：請見下方。</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="280"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="281"/>
         <source>Sent: %1</source>
         <translation>已送出：%1</translation>
     </message>
     <message>
-        <location filename="../ui/run/TestRunPanel.cpp" line="349"/>
+        <location filename="../ui/run/TestRunPanel.cpp" line="350"/>
         <source>Polling is paused: the controller brakes the motor %1 s after the last frame it receives (%2). Resume polling to keep the motor running.</source>
         <translation>輪詢已暫停：控制器會在收到最後一個訊框 %1 s 後煞車停止馬達 (%2)。請恢復輪詢以保持馬達運轉。</translation>
     </message>
@@ -16196,7 +16353,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="44"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
@@ -16251,17 +16408,17 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>訊框數</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Drive</source>
         <translation>驅動器</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Requests</source>
         <translation>請求數</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="111"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
         <source>Replies</source>
         <translation>回應數</translation>
     </message>
@@ -16276,7 +16433,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 錯誤</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="112"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Exceptions</source>
         <translation>例外</translation>
     </message>
@@ -16292,6 +16449,11 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
+        <source>Late replies</source>
+        <translation>延遲回應</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="113"/>
         <source>Max ms</source>
         <translation>最大 ms</translation>
     </message>
@@ -16301,44 +16463,49 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>各驅動器統計</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="168"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="119"/>
+        <source>Frames that answered nothing asked at the time: a reply to an earlier request that came too late, discarded and never taken as a value</source>
+        <translation>不是回應當時請求的訊框：先前請求的回應遲到，已丟棄，從未當作數值使用</translation>
+    </message>
+    <message>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="171"/>
         <source>&amp;Resume</source>
         <translation>繼續(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="317"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="320"/>
         <source>Broadcast</source>
         <translation>廣播</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="239"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="242"/>
         <source>Drive %1</source>
         <translation>驅動器 %1</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="306"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="309"/>
         <source>%1 addresses did not answer: %2</source>
         <translation>%1 個位址未回應：%2</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="308"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="311"/>
         <source>No reply from machine numbers %1</source>
         <translation>機號 %1 無回應</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="353"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="357"/>
         <source>Save traffic log</source>
         <translation>儲存通訊記錄</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="348"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="352"/>
         <source>Text files (*.txt)</source>
         <translation>文字檔 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../ui/traffic/TrafficLogView.cpp" line="354"/>
+        <location filename="../ui/traffic/TrafficLogView.cpp" line="358"/>
         <source>Could not save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
@@ -16461,51 +16628,56 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="79"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未開啟</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
         <source>send failed</source>
         <translation>傳送失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="141"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="145"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="180"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之後又收到另一個回應：此回應可能是對先前請求的回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="205"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>驅動器自己的通訊格式需要序列埠；Modbus TCP 閘道器自行設定它的線路</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="221"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>無法把線路切換到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="261"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
+        <translation>%1 ms 內無回應（先前請求的延遲回應已丟棄）</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>回應來自從站 %1，預期為 %2</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="158"/>
+        <location filename="../transport/RtuBackend.cpp" line="178"/>
         <location filename="../transport/TcpBackend.cpp" line="107"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
@@ -16517,24 +16689,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 不符</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="271"/>
-        <location filename="../transport/RtuBackend.cpp" line="165"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="283"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
+        <translation>已丟棄延遲回應：請求後 %1 ms 即接收完畢，而回應在線路上至少需要 %2 ms</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
         <source> (connection closed)</source>
         <translation> (連線已關閉)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
         <source>stale bytes discarded before sending</source>
         <translation>傳送前已捨棄殘留位元組</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="343"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
         <source>late bytes discarded after an error</source>
         <translation>錯誤後已捨棄延遲到達的位元組</translation>
     </message>
@@ -16815,7 +16992,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%1 正被 %2 (PID %3) 使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="95"/>
+        <location filename="../transport/RtuBackend.cpp" line="115"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -16824,17 +17001,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然後登出再重新登入 (群組設定僅對新的登入工作階段生效)。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="101"/>
+        <location filename="../transport/RtuBackend.cpp" line="121"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (裝置可能不支援此同位元；pty 需使用 N)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="136"/>
+        <location filename="../transport/RtuBackend.cpp" line="156"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>回應宣告 %1 位元組，超過 RTU 訊框的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="157"/>
+        <location filename="../transport/RtuBackend.cpp" line="177"/>
         <source>no reply</source>
         <translation>無回應</translation>
     </message>
@@ -17115,12 +17292,12 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TrendCsv</name>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../model/monitor/TrendCsv.cpp" line="25"/>
+        <location filename="../model/monitor/TrendCsv.cpp" line="28"/>
         <source>seconds</source>
         <translation>秒</translation>
     </message>
@@ -17290,278 +17467,278 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::TuneCommand</name>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="81"/>
+        <location filename="../cli/TuneCommand.cpp" line="82"/>
         <source>Speed-loop step test and relay autotune of a DC controller (needs --yes)</source>
         <translation>DC 控制器的速度迴路步階測試與繼電器自動調諧 (需要 --yes)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="87"/>
+        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <source>Run the test (it moves the motor).</source>
         <translation>執行測試 (會使馬達運轉)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
+        <location filename="../cli/TuneCommand.cpp" line="89"/>
         <source>step: speed before the step (default 0).</source>
         <translation>step：步階前的速度 (預設 0)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="88"/>
         <location filename="../cli/TuneCommand.cpp" line="89"/>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>SPEED</source>
         <translation>SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="89"/>
+        <location filename="../cli/TuneCommand.cpp" line="90"/>
         <source>step: speed after the step.</source>
         <translation>step：步階後的速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="90"/>
+        <location filename="../cli/TuneCommand.cpp" line="91"/>
         <source>step: record this long after the step (default 1500).</source>
         <translation>step：步階後記錄的時間長度 (預設 1500)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="91"/>
+        <location filename="../cli/TuneCommand.cpp" line="92"/>
         <source>MS</source>
         <translation>MS</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="92"/>
+        <location filename="../cli/TuneCommand.cpp" line="93"/>
         <source>autotune: operating speed of the relay test.</source>
         <translation>autotune：繼電器測試的運轉速度。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="93"/>
+        <location filename="../cli/TuneCommand.cpp" line="94"/>
         <source>autotune: output swing, % of full output (default 10).</source>
         <translation>autotune：輸出擺幅，以滿輸出的 % 表示 (預設 10)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="94"/>
+        <location filename="../cli/TuneCommand.cpp" line="95"/>
         <source>PERCENT</source>
         <translation>PERCENT</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>autotune: soft, medium (default), stiff, tyreus-luyben or zn-pi.</source>
         <translation>autotune：soft、medium (預設)、stiff、tyreus-luyben 或 zn-pi。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="96"/>
+        <location filename="../cli/TuneCommand.cpp" line="97"/>
         <source>RULE</source>
         <translation>RULE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="97"/>
+        <location filename="../cli/TuneCommand.cpp" line="98"/>
         <source>autotune: write the proposed gains, then run a step test from half the operating speed to it.</source>
         <translation>autotune：寫入建議增益，然後執行從運轉速度的一半到運轉速度的步階測試。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="100"/>
+        <location filename="../cli/TuneCommand.cpp" line="101"/>
         <source>autotune: with --accept, store the gains in the drive if the step measured with them passes the check.</source>
         <translation>autotune：搭配 --accept 時，若以此增益量測的步階通過檢查，便將增益保存至驅動器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="103"/>
+        <location filename="../cli/TuneCommand.cpp" line="104"/>
         <source>autotune: with --accept, keep (and with --store, store) gains whose measured step failed the check; without it they are written back to what the drive had.</source>
         <translation>autotune：搭配 --accept 時，即使量測的步階未通過檢查仍保留增益 (搭配 --store 則保存)；不指定時會寫回驅動器原本的增益。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="106"/>
+        <location filename="../cli/TuneCommand.cpp" line="107"/>
         <source>Stop at once beyond this speed (default 120 % of the test&apos;s highest).</source>
         <translation>速度超過此值時立即停止 (預設為測試最高速度的 120 %)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="107"/>
+        <location filename="../cli/TuneCommand.cpp" line="108"/>
         <source>Stop at once beyond this current in A (default 20).</source>
         <translation>電流超過此值 (A) 時立即停止 (預設 20)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="108"/>
+        <location filename="../cli/TuneCommand.cpp" line="109"/>
         <source>A</source>
         <translation>A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>Write the samples to FILE.</source>
         <translation>將取樣資料寫入 FILE。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="109"/>
+        <location filename="../cli/TuneCommand.cpp" line="110"/>
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="123"/>
+        <location filename="../cli/TuneCommand.cpp" line="124"/>
         <source>error: usage: %1</source>
         <translation>錯誤：用法：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="133"/>
+        <location filename="../cli/TuneCommand.cpp" line="134"/>
         <source>error: --%1 must be a number 0 or more, got &apos;%2&apos;</source>
         <translation>錯誤：--%1 必須是 0 以上的數字，收到 &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="155"/>
-        <location filename="../cli/TuneCommand.cpp" line="166"/>
-        <location filename="../cli/TuneCommand.cpp" line="171"/>
-        <location filename="../cli/TuneCommand.cpp" line="374"/>
+        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="167"/>
+        <location filename="../cli/TuneCommand.cpp" line="172"/>
+        <location filename="../cli/TuneCommand.cpp" line="375"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="156"/>
+        <location filename="../cli/TuneCommand.cpp" line="157"/>
         <source>step needs --to SPEED</source>
         <translation>step 需要 --to SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="157"/>
+        <location filename="../cli/TuneCommand.cpp" line="158"/>
         <source>--rule must be one of %1</source>
         <translation>--rule 必須是 %1 其中之一</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="159"/>
+        <location filename="../cli/TuneCommand.cpp" line="160"/>
         <source>autotune needs --speed SPEED</source>
         <translation>autotune 需要 --speed SPEED</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="175"/>
+        <location filename="../cli/TuneCommand.cpp" line="176"/>
         <source>Would run the motor of machine number %1 from %2 to %3 and record the step response.</source>
         <translation>將使機號 %1 的馬達從 %2 運轉到 %3，並記錄步階響應。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="180"/>
+        <location filename="../cli/TuneCommand.cpp" line="181"/>
         <source>Would run the motor of machine number %1 in a relay test around %2 (output ±%3 %).</source>
         <translation>將使機號 %1 的馬達在 %2 附近進行繼電器測試 (輸出 ±%3 %)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="186"/>
+        <location filename="../cli/TuneCommand.cpp" line="187"/>
         <source>This moves the motor: add --yes to run it.</source>
         <translation>此操作會使馬達運轉：加上 --yes 才會執行。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="235"/>
+        <location filename="../cli/TuneCommand.cpp" line="236"/>
         <source>Machine number %1, gains %2</source>
         <translation>機號 %1，增益 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="237"/>
+        <location filename="../cli/TuneCommand.cpp" line="238"/>
         <source>  rise time (10–90 %): %1</source>
         <translation>  上升時間 (10–90 %)：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="238"/>
+        <location filename="../cli/TuneCommand.cpp" line="239"/>
         <source>  overshoot: %1 %</source>
         <translation>  超調：%1 %</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="239"/>
+        <location filename="../cli/TuneCommand.cpp" line="240"/>
         <source>  settling time (2 %): %1</source>
         <translation>  安定時間 (2 %)：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="240"/>
+        <location filename="../cli/TuneCommand.cpp" line="241"/>
         <source>  steady-state error: %1 %2</source>
         <translation>  穩態誤差：%1 %2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="241"/>
+        <location filename="../cli/TuneCommand.cpp" line="242"/>
         <source>  peak current: %1 A</source>
         <translation>  峰值電流：%1 A</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="267"/>
+        <location filename="../cli/TuneCommand.cpp" line="268"/>
         <source>Step %1 → %2 %3:</source>
         <translation>步階 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="272"/>
+        <location filename="../cli/TuneCommand.cpp" line="273"/>
         <source>Relay test: Ku %1, Tu %2 ms measured (amplitude ±%3 %4, %5 cycles, %6 readings per period, one every %7 ms)</source>
         <translation>繼電器測試：Ku %1，實測 Tu %2 ms (振幅 ±%3 %4，%5 個週期，每週期讀取 %6 次，每 %7 ms 一次)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="364"/>
+        <location filename="../cli/TuneCommand.cpp" line="365"/>
         <source>What to change: %1</source>
         <translation>應變更的項目：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="281"/>
+        <location filename="../cli/TuneCommand.cpp" line="282"/>
         <source>Model: gain %1, time constant %2 ms, dead time %3 ms (the bus&apos;s %4 ms left out)</source>
         <translation>模型：增益 %1，時間常數 %2 ms，延遲時間 %3 ms (已扣除匯流排的 %4 ms)</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="287"/>
+        <location filename="../cli/TuneCommand.cpp" line="288"/>
         <source>The drive&apos;s own loop on the model: Ku %1, Tu %2 ms</source>
         <translation>模型上驅動器本身的迴路：Ku %1，Tu %2 ms</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="290"/>
+        <location filename="../cli/TuneCommand.cpp" line="291"/>
         <source>Proposed (%1): %2</source>
         <translation>建議值 (%1)：%2</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="291"/>
+        <location filename="../cli/TuneCommand.cpp" line="292"/>
         <source>  the rule&apos;s P × %1, Ti × %2; predicted step %3 → %4 %5: overshoot %6 %, settling time %7</source>
         <translation>  規則的 P × %1，Ti × %2；預測步階 %3 → %4 %5：超調 %6 %，安定時間 %7</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="307"/>
+        <location filename="../cli/TuneCommand.cpp" line="308"/>
         <source>Writing the proposed gains failed: %1</source>
         <translation>寫入建議增益失敗：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="310"/>
+        <location filename="../cli/TuneCommand.cpp" line="311"/>
         <source>Proposed gains written (not stored).</source>
         <translation>已寫入建議增益 (未保存)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="313"/>
+        <location filename="../cli/TuneCommand.cpp" line="314"/>
         <source>Measured step %1 → %2 %3 with them:</source>
         <translation>以此增益量測的步階 %1 → %2 %3：</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="321"/>
+        <location filename="../cli/TuneCommand.cpp" line="322"/>
         <source>interrupted</source>
         <translation>已中斷</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="324"/>
+        <location filename="../cli/TuneCommand.cpp" line="325"/>
         <source>Check after Accept: passed. %1</source>
         <translation>接受後的檢查：通過。%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="325"/>
+        <location filename="../cli/TuneCommand.cpp" line="326"/>
         <source>Check after Accept: FAILED. %1</source>
         <translation>接受後的檢查：未通過。%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="334"/>
+        <location filename="../cli/TuneCommand.cpp" line="335"/>
         <source>The gains before were written back (%1); nothing was stored. --override-check keeps the proposal (and with --store stores it) all the same.</source>
         <translation>已寫回原先的增益 (%1)；未保存任何內容。加上 --override-check 仍會保留建議值 (搭配 --store 則保存)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="338"/>
+        <location filename="../cli/TuneCommand.cpp" line="339"/>
         <source>Writing back the gains before failed: %1; the proposal is still in the drive (not stored).</source>
         <translation>寫回原先的增益失敗：%1；建議值仍在驅動器中 (未保存)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="345"/>
+        <location filename="../cli/TuneCommand.cpp" line="346"/>
         <source>Storing although the check failed (--override-check).</source>
         <translation>檢查未通過，仍予保存 (--override-check)。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="354"/>
+        <location filename="../cli/TuneCommand.cpp" line="355"/>
         <source>Gains stored in the drive.</source>
         <translation>增益已保存至驅動器。</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="355"/>
+        <location filename="../cli/TuneCommand.cpp" line="356"/>
         <source>Storing the gains failed: %1</source>
         <translation>保存增益失敗：%1</translation>
     </message>
     <message>
-        <location filename="../cli/TuneCommand.cpp" line="362"/>
+        <location filename="../cli/TuneCommand.cpp" line="363"/>
         <source>Test ended: %1</source>
         <translation>測試已結束：%1</translation>
     </message>
@@ -18127,32 +18304,32 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitLog</name>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Time</source>
         <translation>時間</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Serial</source>
         <translation>序號</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Verdict</source>
         <translation>判定</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="17"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="19"/>
         <source>Reason</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="30"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
         <source>%1, NOT RECORDED</source>
         <translation>%1，未記錄</translation>
     </message>
     <message>
-        <location filename="../ui/eol/UnitLog.cpp" line="32"/>
+        <location filename="../ui/eol/UnitLog.cpp" line="34"/>
         <source>%1 (kept on this station)</source>
         <translation>%1（保存在本工作站）</translation>
     </message>
@@ -18211,97 +18388,97 @@ then log out and in again (the group applies to new sessions only).</source>
 <context>
     <name>opentop::UnitValuesCsv</name>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="71"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="74"/>
         <source>the CSV file is larger than %1 MB</source>
         <translation>CSV 檔大於 %1 MB</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="73"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="76"/>
         <source>not a CSV text file (it holds NUL bytes)</source>
         <translation>不是 CSV 文字檔 (含有 NUL 位元組)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="94"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="97"/>
         <source>line %1: a quoted field is not closed properly</source>
         <translation>第 %1 行：引號欄位未正確結束</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="98"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="101"/>
         <source>line %1: the header must start with &quot;serial&quot;, not &quot;%2&quot;</source>
         <translation>第 %1 行：標題列必須以 &quot;serial&quot; 開頭，而非 &quot;%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="102"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="105"/>
         <source>line %1: the header names no per-unit value</source>
         <translation>第 %1 行：標題列中沒有任何單台數值</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="104"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="107"/>
         <source>line %1: more than %2 columns</source>
         <translation>第 %1 行：超過 %2 欄</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="108"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="111"/>
         <source>line %1: column %2 has no name</source>
         <translation>第 %1 行：第 %2 欄沒有名稱</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="110"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="113"/>
         <source>line %1: column &quot;%2&quot; appears twice</source>
         <translation>第 %1 行：欄位 &quot;%2&quot; 出現兩次</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="119"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="122"/>
         <source>line %1: %2 fields, but the header has %3</source>
         <translation>第 %1 行：有 %2 個欄位，但標題列有 %3 個</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="125"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="128"/>
         <source>line %1: no serial number</source>
         <translation>第 %1 行：沒有序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="127"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="130"/>
         <source>line %1: serial number &quot;%2&quot; is already on line %3</source>
         <translation>第 %1 行：序號 &quot;%2&quot; 已出現在第 %3 行</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="134"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="137"/>
         <source>the CSV file is empty; it needs a header &quot;serial,&lt;parameter&gt;,...&quot;</source>
         <translation>CSV 檔為空；需要標題列 &quot;serial,&lt;parameter&gt;,...&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="148"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="151"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="189"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="193"/>
         <source>serial number &quot;%1&quot; is not in the CSV file</source>
         <translation>序號 &quot;%1&quot; 不在 CSV 檔中</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="202"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
         <source>%1: column &quot;%2&quot; is ambiguous, several positions have this per-unit value; name the column &quot;%3:%2&quot;</source>
         <translation>%1：欄位 &quot;%2&quot; 不明確，多個位置都有此單台數值；請將欄位命名為 &quot;%3:%2&quot;</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="206"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="210"/>
         <source>%1: the CSV file has no column &quot;%2&quot; (or &quot;%3:%2&quot;) for this per-unit value</source>
         <translation>%1：CSV 檔中沒有此單台數值的欄位 &quot;%2&quot; (或 &quot;%3:%2&quot;)</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="211"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="215"/>
         <source>line %1, column &quot;%2&quot;: no value for serial number &quot;%3&quot;</source>
         <translation>第 %1 行，欄位 &quot;%2&quot;：序號 &quot;%3&quot; 沒有值</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="220"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
         <source>line %1, column &quot;%2&quot;: &quot;%3&quot; is not a number</source>
         <translation>第 %1 行，欄位 &quot;%2&quot;：&quot;%3&quot; 不是數字</translation>
     </message>
     <message>
-        <location filename="../model/eol/UnitValuesCsv.cpp" line="225"/>
+        <location filename="../model/eol/UnitValuesCsv.cpp" line="231"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -18663,12 +18840,12 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>這是哪一種驅動器？</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="41"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="42"/>
         <source>Not known: check against every variant</source>
         <translation>不確定：依所有機型檢查</translation>
     </message>
     <message>
-        <location filename="../ui/bus/VariantQuestion.cpp" line="64"/>
+        <location filename="../ui/bus/VariantQuestion.cpp" line="65"/>
         <source>the variant of %1 was not given</source>
         <translation>未指定 %1 的機型</translation>
     </message>

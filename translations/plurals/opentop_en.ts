@@ -15,7 +15,7 @@
 <context>
     <name>opentop::AlarmExport</name>
     <message numerus="yes">
-        <location filename="../../ui/alarms/AlarmExport.cpp" line="128"/>
+        <location filename="../../ui/alarms/AlarmExport.cpp" line="132"/>
         <source>%n record(s) of %1 drive(s) written to %2.</source>
         <translation>
             <numerusform>%n record of %1 drive(s) written to %2.</numerusform>
@@ -26,7 +26,7 @@
 <context>
     <name>opentop::BackupDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="111"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="112"/>
         <source>Reading the settings of %n drive(s)…</source>
         <translation>
             <numerusform>Reading the settings of %n drive…</numerusform>
@@ -34,7 +34,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="152"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="153"/>
         <source>%n setting(s) read in %1 ms</source>
         <translation>
             <numerusform>%n setting read in %1 ms</numerusform>
@@ -42,7 +42,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="189"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="190"/>
         <source>Save the %n drive(s) that were read?</source>
         <translation>
             <numerusform>Save the %n drive that was read?</numerusform>
@@ -50,7 +50,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupDialog.cpp" line="213"/>
+        <location filename="../../ui/files/BackupDialog.cpp" line="214"/>
         <source>Saved %n drive(s) to %1.</source>
         <translation>
             <numerusform>Saved %n drive to %1.</numerusform>
@@ -61,7 +61,7 @@
 <context>
     <name>opentop::BackupViewer</name>
     <message numerus="yes">
-        <location filename="../../ui/files/BackupViewer.cpp" line="127"/>
+        <location filename="../../ui/files/BackupViewer.cpp" line="133"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n setting</numerusform>
@@ -94,7 +94,7 @@
 <context>
     <name>opentop::BusPanel</name>
     <message numerus="yes">
-        <location filename="../../ui/bus/BusPanel.cpp" line="271"/>
+        <location filename="../../ui/bus/BusPanel.cpp" line="272"/>
         <source>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive(s) found.</source>
         <translation>
             <numerusform>Scan cancelled after machine numbers %1–%2 (%3 of %4): %n drive found.</numerusform>
@@ -102,7 +102,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/bus/BusPanel.cpp" line="279"/>
+        <location filename="../../ui/bus/BusPanel.cpp" line="280"/>
         <source>%n drive(s) found on machine numbers %1–%2 in %3 s.</source>
         <translation>
             <numerusform>%n drive found on machine numbers %1–%2 in %3 s.</numerusform>
@@ -113,7 +113,7 @@
 <context>
     <name>opentop::CertificateHtml</name>
     <message numerus="yes">
-        <location filename="../../model/eol/CertificateHtml.cpp" line="117"/>
+        <location filename="../../model/eol/CertificateHtml.cpp" line="121"/>
         <source>This serial failed %n earlier test(s); they are listed below.</source>
         <translation>
             <numerusform>This serial failed %n earlier test; they are listed below.</numerusform>
@@ -124,7 +124,7 @@
 <context>
     <name>opentop::CompareDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/CompareDialog.cpp" line="255"/>
+        <location filename="../../ui/files/CompareDialog.cpp" line="258"/>
         <source>%n difference(s)</source>
         <translation>
             <numerusform>%n difference</numerusform>
@@ -173,7 +173,7 @@
 <context>
     <name>opentop::DriveWorkspace</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="150"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="152"/>
         <source>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value(s).</source>
         <translation>
             <numerusform>Every edit is accepted now. Nothing has been written yet: Write all pending sends %n value.</numerusform>
@@ -181,7 +181,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="190"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="192"/>
         <source>%n value(s) could not be read</source>
         <translation>
             <numerusform>%n value could not be read</numerusform>
@@ -189,7 +189,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="231"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="233"/>
         <source>Write %n pending value(s) to machine number %1</source>
         <translation>
             <numerusform>Write %n pending value to machine number %1</numerusform>
@@ -197,7 +197,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="236"/>
+        <location filename="../../ui/workspace/DriveWorkspace.cpp" line="238"/>
         <source>Writing %n value(s)…</source>
         <translation>
             <numerusform>Writing %n value…</numerusform>
@@ -208,7 +208,7 @@
 <context>
     <name>opentop::EolRecipeCheckCommand</name>
     <message numerus="yes">
-        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="89"/>
+        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="93"/>
         <source>%1 is not valid: %n problem(s); nothing may be run with it</source>
         <translation>
             <numerusform>%1 is not valid: %n problem; nothing may be run with it</numerusform>
@@ -216,7 +216,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="100"/>
+        <location filename="../../cli/EolRecipeCheckCommand.cpp" line="107"/>
         <source>; %n unit(s) of %1 checked</source>
         <translation>
             <numerusform>; %n unit of %1 checked</numerusform>
@@ -227,7 +227,7 @@
 <context>
     <name>opentop::EolRecipeSignCommand</name>
     <message numerus="yes">
-        <location filename="../../cli/EolRecipeSignCommand.cpp" line="48"/>
+        <location filename="../../cli/EolRecipeSignCommand.cpp" line="49"/>
         <source>error: %1 does not pass check (%n problem(s)); not signed</source>
         <translation>
             <numerusform>error: %1 does not pass check (%n problem); not signed</numerusform>
@@ -238,7 +238,7 @@
 <context>
     <name>opentop::EolSupport</name>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="134"/>
+        <location filename="../../cli/EolSupport.cpp" line="140"/>
         <source>%n position(s)</source>
         <translation>
             <numerusform>%n position</numerusform>
@@ -246,7 +246,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="135"/>
+        <location filename="../../cli/EolSupport.cpp" line="141"/>
         <source>%n setting(s)</source>
         <translation>
             <numerusform>%n setting</numerusform>
@@ -254,7 +254,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="137"/>
+        <location filename="../../cli/EolSupport.cpp" line="143"/>
         <source>%n per-unit value(s)</source>
         <translation>
             <numerusform>%n per-unit value</numerusform>
@@ -262,7 +262,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../cli/EolSupport.cpp" line="138"/>
+        <location filename="../../cli/EolSupport.cpp" line="144"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n step</numerusform>
@@ -273,7 +273,7 @@
 <context>
     <name>opentop::GetCommand</name>
     <message numerus="yes">
-        <location filename="../../cli/GetCommand.cpp" line="167"/>
+        <location filename="../../cli/GetCommand.cpp" line="168"/>
         <source>error: %n parameter(s) could not be read</source>
         <translation>
             <numerusform>error: %n parameter could not be read</numerusform>
@@ -322,7 +322,7 @@
 <context>
     <name>opentop::MultiDriveWriteDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="321"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="323"/>
         <source>Set it on %n drive(s) anyway?</source>
         <translation>
             <numerusform>Set it on %n drive anyway?</numerusform>
@@ -330,7 +330,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="351"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="353"/>
         <source>Writing %1 to %n drive(s)…</source>
         <translation>
             <numerusform>Writing %1 to %n drive…</numerusform>
@@ -338,7 +338,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="363"/>
+        <location filename="../../ui/workspace/MultiDriveWriteDialog.cpp" line="365"/>
         <source>Written and verified on %1 of %n drive(s).</source>
         <translation>
             <numerusform>Written and verified on %1 of %n drive.</numerusform>
@@ -349,7 +349,7 @@
 <context>
     <name>opentop::ParameterInitBox</name>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="116"/>
+        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="117"/>
         <source>Your %n unwritten edit(s) of this drive are discarded.</source>
         <translation>
             <numerusform>Your %n unwritten edit of this drive is discarded.</numerusform>
@@ -357,7 +357,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="183"/>
+        <location filename="../../ui/workspace/ParameterInitBox.cpp" line="184"/>
         <source>Drive %1 initialised; %n value(s) could not be read back (it may answer only at the default communication settings now).</source>
         <translation>
             <numerusform>Drive %1 initialised; %n value could not be read back (it may answer only at the default communication settings now).</numerusform>
@@ -411,7 +411,7 @@
 <context>
     <name>opentop::ProductionView</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ProductionView.cpp" line="237"/>
+        <location filename="../../ui/eol/ProductionView.cpp" line="242"/>
         <source>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive(s)</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt; rev. %2 — %n drive</numerusform>
@@ -422,7 +422,7 @@
 <context>
     <name>opentop::RecipeEditor</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="255"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="256"/>
         <source>%n problem(s): the recipe cannot be saved until they are fixed.</source>
         <translation>
             <numerusform>%n problem: the recipe cannot be saved until it is fixed.</numerusform>
@@ -430,7 +430,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/RecipeEditor.cpp" line="267"/>
+        <location filename="../../ui/eol/RecipeEditor.cpp" line="268"/>
         <source>the recipe does not pass check (%n problem(s)); nothing was saved</source>
         <translation>
             <numerusform>the recipe does not pass check (%n problem); nothing was saved</numerusform>
@@ -441,7 +441,7 @@
 <context>
     <name>opentop::RestoreDialog</name>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="123"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="124"/>
         <source>%n drive(s) in the file. Choose what to restore, then Preview.</source>
         <translation>
             <numerusform>%n drive in the file. Choose what to restore, then Preview.</numerusform>
@@ -449,7 +449,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="246"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="247"/>
         <source>%n setting(s) to write</source>
         <translation>
             <numerusform>%n setting to write</numerusform>
@@ -457,7 +457,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/files/RestoreDialog.cpp" line="332"/>
+        <location filename="../../ui/files/RestoreDialog.cpp" line="333"/>
         <source>Write %n setting(s) to drive(s) %1, each verified by reading it back?</source>
         <translation>
             <numerusform>Write %n setting to drive(s) %1, each verified by reading it back?</numerusform>
@@ -490,7 +490,7 @@
 <context>
     <name>opentop::ResultsBrowser</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="236"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="239"/>
         <source>%n unit(s): %1 passed, %2 failed, %3 station errors · %4</source>
         <translation>
             <numerusform>%n unit: %1 passed, %2 failed, %3 station errors · %4</numerusform>
@@ -498,7 +498,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../ui/eol/ResultsBrowser.cpp" line="317"/>
+        <location filename="../../ui/eol/ResultsBrowser.cpp" line="321"/>
         <source>%n unit(s) written to %1</source>
         <translation>
             <numerusform>%n unit written to %1</numerusform>
@@ -509,7 +509,7 @@
 <context>
     <name>opentop::RunningDataPage</name>
     <message numerus="yes">
-        <location filename="../../ui/pages/RunningDataPage.cpp" line="358"/>
+        <location filename="../../ui/pages/RunningDataPage.cpp" line="359"/>
         <source>SPno%1 initialized; %n value(s) could not be read back</source>
         <translation>
             <numerusform>SPno%1 initialized; %n value could not be read back</numerusform>
@@ -520,7 +520,7 @@
 <context>
     <name>opentop::StationNotice</name>
     <message numerus="yes">
-        <location filename="../../ui/eol/StationNotice.cpp" line="29"/>
+        <location filename="../../ui/eol/StationNotice.cpp" line="31"/>
         <source>%n result(s) kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</source>
         <translation>
             <numerusform>%n result kept on this station, not yet in the results database: %1. They are sent by themselves, in order, when it answers.</numerusform>
