@@ -27,7 +27,8 @@ public:
     static void restore(const QVector<Setting>& file, const Truth& after, const CliRun& run,
                         FaultCounts* counts);
     // A restore that wrote a setting the drive already held (`before`, the truth before the
-    // run): it must have misread the drive (issue 28: late replies taken for answers).
+    // run) because it read another value: it misread the drive (issue 28: late replies taken
+    // for answers). A setting read as equal and written with its block is no misread.
     static void needlessWrites(const QVector<Setting>& file, const Truth& before, const CliRun& run,
                                FaultCounts* counts);
     // At the end: every drive equal to the file.
