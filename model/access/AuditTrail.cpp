@@ -5,6 +5,7 @@
 
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QTimeZone>
 #include <QUuid>
 #include <cmath>
 
@@ -71,7 +72,7 @@ std::optional<QVector<AuditEntry>> AuditTrail::query(const AuditFilter& f, QStri
     while (q.next()) {
         AuditEntry e;
         e.time = QDateTime::fromMSecsSinceEpoch(qint64(std::llround(q.value(0).toDouble() * 1000)),
-                                                Qt::UTC);
+                                                QTimeZone::utc());
         e.station = q.value(1).toString();
         e.user = q.value(2).toString();
         e.action = q.value(3).toString();

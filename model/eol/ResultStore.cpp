@@ -5,6 +5,7 @@
 
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QTimeZone>
 #include <QUuid>
 #include <algorithm>
 #include <atomic>
@@ -48,7 +49,7 @@ QDateTime uniqueStartUtc()
     do {
         next = std::max(now, previous + 1);
     } while (!last.compare_exchange_weak(previous, next));
-    return QDateTime::fromMSecsSinceEpoch(next, Qt::UTC);
+    return QDateTime::fromMSecsSinceEpoch(next, QTimeZone::utc());
 }
 
 } // namespace

@@ -15,6 +15,7 @@
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimeZone>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -32,7 +33,7 @@ protected:
         std::unique_ptr<ResultDatabase> database = ResultDatabase::open(db, &error);
         ASSERT_TRUE(database) << qPrintable(error);
         ResultStore store(*database);
-        const QDateTime base(QDate(2026, 11, 24), QTime(13, 0), Qt::UTC);
+        const QDateTime base(QDate(2026, 11, 24), QTime(13, 0), QTimeZone::utc());
         // A: S1 passes; S2 fails, then passes its retest; S3's station died mid-unit.
         // B (another recipe and station): S4 aborted.
         auto add = [&](const char* serial, UnitStatus status, int minute, const char* recipe,

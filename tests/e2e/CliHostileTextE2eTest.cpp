@@ -13,6 +13,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QTimeZone>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -107,7 +108,7 @@ protected:
         if (!db)
             return path;
         ResultStore store(*db);
-        const QDateTime base(QDate(2026, 11, 24), QTime(13, 0), Qt::UTC);
+        const QDateTime base(QDate(2026, 11, 24), QTime(13, 0), QTimeZone::utc());
         auto add = [&](const QString& serial, const QString& operatorName, UnitStatus status,
                        const QString& reason, int minute) {
             UnitRecord u;

@@ -13,6 +13,7 @@
 #include "transport/TrafficEntry.h"
 #include <QByteArray>
 #include <QDateTime>
+#include <QTimeZone>
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -47,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
     TrafficEntry entry;
     entry.sequence = selector;
-    entry.time = QDateTime::fromMSecsSinceEpoch(0, Qt::UTC);
+    entry.time = QDateTime::fromMSecsSinceEpoch(0, QTimeZone::utc());
     entry.direction = static_cast<TrafficEntry::Direction>((selector >> 2) % 3);
     entry.slave = frame.isEmpty() ? request.slave : quint8(frame[0]);
     entry.function = frame.size() < 2 ? request.function : quint8(frame[1]);

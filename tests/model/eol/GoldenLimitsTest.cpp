@@ -5,6 +5,7 @@
 #include "model/profile/ProfileRegistry.h"
 #include "tests/model/eol/RecipeTestSupport.h"
 
+#include <QTimeZone>
 #include <cmath>
 
 using namespace opentop;
@@ -36,7 +37,7 @@ UnitRecord dbuGolden(double load)
 {
     UnitRecord r;
     r.status = UnitStatus::Pass;
-    r.started = QDateTime(QDate(2026, 11, 29), QTime(8, 0), Qt::UTC);
+    r.started = QDateTime(QDate(2026, 11, 29), QTime(8, 0), QTimeZone::utc());
     const QString dbu = QStringLiteral("dbu");
     const QString speed = QStringLiteral("status.current_speed");
     r.measurements << measured(1, QStringLiteral("time to reach speed"), 1.2)

@@ -8,6 +8,7 @@
 #include <QFile>
 #include <QSqlQuery>
 #include <QTemporaryDir>
+#include <QTimeZone>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -225,7 +226,7 @@ TEST_F(ResultDatabaseTest, MarkInterruptedTouchesOnlyThisStationsOlderRunningUni
     ASSERT_TRUE(db);
     ResultStore store(*db);
     QString error;
-    const QDateTime restart(QDate(2026, 11, 24), QTime(14, 0), Qt::UTC);
+    const QDateTime restart(QDate(2026, 11, 24), QTime(14, 0), QTimeZone::utc());
     auto begin = [&](const QString& serial, const QString& station, const QDateTime& at) {
         UnitRecord r = test::eolSampleUnit(serial);
         r.station = station;

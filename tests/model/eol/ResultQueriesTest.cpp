@@ -5,6 +5,7 @@
 #include "tests/support/EolSampleUnit.h"
 
 #include <QTemporaryDir>
+#include <QTimeZone>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -61,7 +62,7 @@ protected:
 
     QTemporaryDir dir;
     std::unique_ptr<ResultDatabase> db;
-    const QDateTime t0{QDate(2026, 11, 24), QTime(8, 0), Qt::UTC};
+    const QDateTime t0{QDate(2026, 11, 24), QTime(8, 0), QTimeZone::utc()};
 };
 
 QStringList list(std::initializer_list<const char*> items)

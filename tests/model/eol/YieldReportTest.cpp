@@ -1,6 +1,7 @@
 #include "model/eol/YieldReport.h"
 #include "model/eol/ResultCsv.h"
 
+#include <QTimeZone>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -21,7 +22,7 @@ UnitRecord unit(const char* serial, const char* recipe, const QDateTime& started
     return r;
 }
 
-const QDateTime day(QDate(2026, 11, 24), QTime(0, 0), Qt::UTC);
+const QDateTime day(QDate(2026, 11, 24), QTime(0, 0), QTimeZone::utc());
 
 QDateTime at(int hour, int minute = 0, int dayOffset = 0)
 {

@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
+#include <QTimeZone>
 
 using namespace opentop;
 using namespace opentop::test;
@@ -29,7 +30,7 @@ protected:
         ASSERT_TRUE(dc.ok) << qPrintable(dc.failures.join(QLatin1Char('\n')) +
                                          dc.disallowed.join(QLatin1Char('\n')));
         file.tool = BackupFile::toolName();
-        file.created = QDateTime(QDate(2024, 5, 1), QTime(10, 0), Qt::UTC);
+        file.created = QDateTime(QDate(2024, 5, 1), QTime(10, 0), QTimeZone::utc());
         file.connection = BackupFile::connectionOf(client->settings());
         file.devices << dbu.device << dc.device;
     }

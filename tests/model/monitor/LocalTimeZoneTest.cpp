@@ -40,7 +40,7 @@ private:
 TEST_F(LocalTimeZoneTest, NamesTheSystemsZoneSoThatItIsReadOnce)
 {
     const QByteArray before = QTimeZone::systemTimeZoneId();
-    const QDateTime instant = QDateTime::fromSecsSinceEpoch(1764000000, Qt::UTC);
+    const QDateTime instant = QDateTime::fromSecsSinceEpoch(1764000000, QTimeZone::utc());
     const QString localBefore = instant.toLocalTime().toString(Qt::ISODate);
     LocalTimeZone::readOnce();
     EXPECT_EQ(qgetenv("TZ"), QByteArray(":/etc/localtime"));
@@ -55,5 +55,5 @@ TEST_F(LocalTimeZoneTest, AZoneTheUserChoseIsKept)
     qputenv("TZ", "XYZ-8"); // a POSIX zone 8 h east of UTC: no tzdata needed
     LocalTimeZone::readOnce();
     EXPECT_EQ(qgetenv("TZ"), QByteArray("XYZ-8"));
-    EXPECT_EQ(QDateTime::fromSecsSinceEpoch(0, Qt::UTC).toLocalTime().time().hour(), 8);
+    EXPECT_EQ(QDateTime::fromSecsSinceEpoch(0, QTimeZone::utc()).toLocalTime().time().hour(), 8);
 }
