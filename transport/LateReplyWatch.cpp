@@ -15,6 +15,7 @@ void LateReplyWatch::opened(double nowMs, int timeoutMs)
 void LateReplyWatch::clear()
 {
     m_waits.clear();
+    m_unanswered.clear();
     m_suspects.clear();
     m_checkedSinceOpen.clear();
 }
@@ -66,8 +67,35 @@ void LateReplyWatch::suspect(quint8 slave, double nowMs, int timeoutMs)
     m_suspects.append(Entry{slave, {untilMs, 0}});
 }
 
+void LateReplyWatch::unanswered(const ModbusRequest& request, double nowMs, int timeoutMs)
+{
+    if (request.isBroadcast() || request.raw)
+        return;
+    const double untilMs = nowMs + std::max(3000.0, 10.0 * timeoutMs);
+    for (Shape& s : m_unanswered) {
+        if (s.slave == request.slave && s.function == request.function &&
+            s.count == request.count) {
+            s.untilMs = std::max(s.untilMs, untilMs);
+            return;
+        }
+    }
+    m_unanswered.append(Shape{request.slave, request.function, request.count, untilMs});
+}
+
+bool LateReplyWatch::ambiguous(const ModbusRequest& request, double nowMs)
+{
+    m_unanswered.erase(std::remove_if(m_unanswered.begin(), m_unanswered.end(),
+                                      [nowMs](const Shape& s) { return s.untilMs <= nowMs; }),
+                       m_unanswered.end());
+    return std::any_of(m_unanswered.begin(), m_unanswered.end(), [&](const Shape& s) {
+        return s.slave == request.slave &&
+               (s.function == 0 || (s.function == request.function && s.count == request.count));
+    });
+}
+
 void LateReplyWatch::suspectUntil(quint8 slave, double untilMs)
 {
+    m_unanswered.append(Shape{slave, 0, 0, untilMs});
     for (Entry& e : m_suspects) {
         if (e.slave == slave) {
             e.wait.untilMs = std::max(e.wait.untilMs, untilMs);

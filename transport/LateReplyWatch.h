@@ -52,6 +52,13 @@ public:
     // A suspect until `untilMs` whatever its exchanges show: the line's previous user gave up
     // on a request to it (LateReplyJournal).
     void suspectUntil(quint8 slave, double untilMs);
+    // A request that got no answer it could take, at `nowMs`: until the suspect window is
+    // over, a reply of its shape (function and length) may still be its late answer.
+    void unanswered(const ModbusRequest& request, double nowMs, int timeoutMs);
+    // A good reply to `request` may be the late answer to an earlier request of the same shape
+    // to the same slave (unanswered(); any shape for a slave the line's previous user left):
+    // it must be confirmed (LibmodbusBackend reads again).
+    bool ambiguous(const ModbusRequest& request, double nowMs);
     struct Suspect
     {
         quint8 slave = 0;
@@ -71,8 +78,16 @@ private:
     };
     static void forgetOver(QVector<Entry>* entries, double nowMs);
 
-    QVector<Entry> m_waits;          // slaves that timed out silently, quiet time not yet over
+    QVector<Entry> m_waits; // slaves that timed out silently, quiet time not yet over
+    struct Shape
+    {
+        quint8 slave = 0;
+        quint8 function = 0; // 0: any (from the line's previous user)
+        int count = 0;
+        double untilMs = 0;
+    };
     QVector<Entry> m_suspects;       // slaves whose replies are checked for a second reply
+    QVector<Shape> m_unanswered;     // requests whose late answer may still come
     double m_suspectAllUntilMs = 0;  // every slave is a suspect until then (opened())
     QSet<quint8> m_checkedSinceOpen; // slaves whose first exchange was checked (isSuspect())
 };

@@ -73,6 +73,41 @@ bool LibmodbusBackend::isOpen() const
 
 ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeoutMs)
 {
+    ModbusResult result = exchange(request, timeoutMs);
+    // A read answered while a read of the same length to the same drive is still unanswered:
+    // the reply may be that one's late answer, which no timing can tell apart (a drive that
+    // answers both late). Read again until two replies agree.
+    if (wireTimeMs(1) <= 0 || !request.isRead() || request.raw)
+        return result;
+    for (int again = 0;
+         result.error == ModbusError::Ok && again < 3 && m_late.ambiguous(request, nowMs());
+         ++again) {
+        ModbusResult second = exchange(request, timeoutMs);
+        if (second.error != ModbusError::Ok || second.registers == result.registers) {
+            if (second.error == ModbusError::Ok)
+                logEvent(request,
+                         QCoreApplication::translate(
+                             "opentop::Transport",
+                             "read twice: a read of the same length was unanswered, and the "
+                             "first reply could have been its late answer"),
+                         QString());
+            return second;
+        }
+        m_late.unanswered(request, nowMs(), m_settings.timeoutMs);
+        result = second;
+    }
+    if (result.error == ModbusError::Ok && m_late.ambiguous(request, nowMs())) {
+        result.error = ModbusError::MalformedReply;
+        result.registers.clear();
+        result.message = QCoreApplication::translate(
+            "opentop::Transport", "replies disagree: late answers to earlier reads are likely");
+        logEvent(request, result.message, result.errorText());
+    }
+    return result;
+}
+
+ModbusResult LibmodbusBackend::exchange(const ModbusRequest& request, int timeoutMs)
+{
     ModbusResult result;
     if (!isOpen()) {
         result.error = ModbusError::NotConnected;
@@ -158,6 +193,7 @@ ModbusResult LibmodbusBackend::transact(const ModbusRequest& request, int timeou
         // The wait for a late reply is deferred to the next request that needs it.
         m_late.timedOut(request.slave, nowMs(), timeoutMs, replyDeadlineMs(request, timeoutMs),
                         recoveryQuietMs(request));
+        m_late.unanswered(request, nowMs(), timeoutMs);
         // Counted from sending, as the timeout is; TCP has no wire time and no gap.
         m_notes.hold(request, m_timing.sentAtMs() + timeoutMs +
                                   wireTimeMs(LineNotes::longestReplyBytes(request)) + frameGapMs());
@@ -317,6 +353,10 @@ void LibmodbusBackend::discardEarlyReply(const ModbusRequest& request, const QBy
     const quint8 sender = rtu.isEmpty() ? request.slave : quint8(rtu.at(0));
     // Its sender had an unanswered request: check its next replies for another behind them.
     m_late.suspect(sender, nowMs(), m_settings.timeoutMs);
+    // It had the shape of this request: one of that shape to its sender was unanswered.
+    ModbusRequest shape = request;
+    shape.slave = sender;
+    m_late.unanswered(shape, nowMs(), m_settings.timeoutMs);
     m_notes.noteDiscarded(rtu);
     logFrame(false, adu, request, QString(),
              QCoreApplication::translate("opentop::Transport",
@@ -372,6 +412,7 @@ void LibmodbusBackend::recover(const ModbusRequest& request, int timeoutMs)
     // for a frame time after a frame, then flush. Neither the retry nor the next request may
     // read it.
     m_late.suspect(request.slave, nowMs(), timeoutMs);
+    m_late.unanswered(request, nowMs(), timeoutMs);
     const int quietMs = recoveryQuietMs(request);
     drain(request, std::max(double(quietMs), replyDeadlineMs(request, timeoutMs) - nowMs()),
           quietMs);

@@ -3,6 +3,7 @@
 #include "tests/faultmatrix/MatrixSim.h"
 
 #include <QJsonArray>
+#include <QRegularExpression>
 
 namespace opentop::faultmatrix {
 
@@ -101,6 +102,16 @@ void FaultJudge::backupFailed(const CliRun& run, bool fileTouched, FaultCounts* 
     if (fileTouched) {
         ++c->unreported;
         c->findings << QStringLiteral("a failed backup (exit %1) changed the file").arg(run.code);
+    }
+    // The matrix only ever gives the drives values their profiles allow: a backup that found
+    // one it does not took another reply for the drive's (issue 28).
+    // (Not one whose allowed values depend on a setting the backup could not read.)
+    static const QRegularExpression outside(
+        QStringLiteral("holds a value its profile does not allow[^\n]*is not allowed"));
+    if (outside.match(run.err).hasMatch()) {
+        ++c->backupDiffer;
+        c->findings << QStringLiteral("a backup read a value the drive does not hold: %1")
+                           .arg(run.reason().left(300));
     }
 }
 

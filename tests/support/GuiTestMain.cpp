@@ -12,5 +12,6 @@ int main(int argc, char** argv)
                                                  "/tests/support/offscreen-laptop.json"));
     QApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
+    opentop::test::PrivateUserDirs::startEachTestWithoutJournal();
     return RUN_ALL_TESTS();
 }

@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
+#include <gtest/gtest.h>
 
 namespace opentop::test {
 
@@ -28,6 +29,21 @@ public:
         // one test process must not inherit another's (LateReplyJournal).
         const QString late = m_dir.filePath(QStringLiteral("late"));
         qputenv("OPENTOP_LATE_JOURNAL_DIR", QFile::encodeName(late));
+    }
+
+    // After InitGoogleTest: each test starts with no late-reply journal, as on a machine
+    // where nothing used the port before (ptys are numbered again as tests end, so a test
+    // would otherwise inherit what the one before left for the same /dev/pts number).
+    static void startEachTestWithoutJournal()
+    {
+        struct Listener : ::testing::EmptyTestEventListener
+        {
+            void OnTestStart(const ::testing::TestInfo&) override
+            {
+                QDir(qEnvironmentVariable("OPENTOP_LATE_JOURNAL_DIR")).removeRecursively();
+            }
+        };
+        ::testing::UnitTest::GetInstance()->listeners().Append(new Listener);
     }
 
 private:

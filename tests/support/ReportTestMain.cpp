@@ -11,5 +11,6 @@ int main(int argc, char** argv)
     qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("offscreen"));
     QGuiApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
+    opentop::test::PrivateUserDirs::startEachTestWithoutJournal();
     return RUN_ALL_TESTS();
 }

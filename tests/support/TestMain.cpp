@@ -10,5 +10,6 @@ int main(int argc, char** argv)
     const opentop::test::PrivateUserDirs dirs;
     QCoreApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
+    opentop::test::PrivateUserDirs::startEachTestWithoutJournal();
     return RUN_ALL_TESTS();
 }
