@@ -13073,32 +13073,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="64"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>中断: 製品の試験が終わる前にステーションが停止しました（強制終了、停電、クラッシュ）。製品は検証されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="71"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>a unit needs a serial number</source>
         <translation>製品にはシリアル番号が必要です</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="196"/>
+        <location filename="../model/eol/ResultStore.cpp" line="197"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>製品の終了は pass、fail、error、aborted のいずれかで、%1 は使えません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="226"/>
+        <location filename="../model/eol/ResultStore.cpp" line="227"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>製品 %1（シリアル %2）は結果データベースで開始されていません</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="228"/>
+        <location filename="../model/eol/ResultStore.cpp" line="229"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>製品 %1（シリアル %2）はすでに %3 として記録されています。その記録を保持します</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="250"/>
+        <location filename="../model/eol/ResultStore.cpp" line="251"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>製品 %1（シリアル %2）は結果データベースで実行中ではありません: 開始されていないか、すでに終了または中断としてマークされています</translation>
     </message>
@@ -16628,49 +16628,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%1 を開けません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="89"/>
+        <source>read twice: a read of the same length was unanswered, and the first reply could have been its late answer</source>
+        <translation>2 回読み出し: 同じ長さの読み出しが未応答で、最初の応答はその遅延応答だった可能性があります</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="102"/>
+        <source>replies disagree: late answers to earlier reads are likely</source>
+        <translation>応答が一致しません: 以前の読み出しへの遅延応答の可能性が高いです</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 が開いていません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="160"/>
         <source>send failed</source>
         <translation>送信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="186"/>
         <source>interrupted while waiting</source>
         <translation>待機中に中断しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 以内に応答がありません</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="226"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>別の応答が続きました: この応答は以前の要求に対するものの可能性があります</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="253"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>ドライブ自身の通信フォーマットにはシリアルポートが必要です。Modbus TCP ゲートウェイは回線を自分で設定します</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="269"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>回線を %1 に切り替えられません: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="312"/>
         <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
         <translation>%1 ms 以内に応答なし（以前の要求への遅延応答は破棄しました）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="334"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>局番 %1 からの応答（期待値 %2）</translation>
@@ -16689,29 +16699,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
         <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="362"/>
         <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
         <translation>遅延応答を破棄: 要求の %1 ms 後に受信完了。応答には線路上で少なくとも %2 ms かかります</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="378"/>
         <source> (connection closed)</source>
         <translation> (接続切断)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="393"/>
         <source>stale bytes discarded before sending</source>
         <translation>送信前に残留バイトを破棄しました</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="440"/>
         <source>late bytes discarded after an error</source>
         <translation>エラー後に遅延バイトを破棄しました</translation>
     </message>

@@ -13073,32 +13073,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="64"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>중단됨: 제품이 끝나기 전에 스테이션이 멈췄습니다(강제 종료, 정전 또는 비정상 종료). 제품은 검증되지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="71"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>a unit needs a serial number</source>
         <translation>제품에는 시리얼 번호가 필요합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="196"/>
+        <location filename="../model/eol/ResultStore.cpp" line="197"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>제품은 %1이(가) 아니라 pass, fail, error 또는 aborted로 끝나야 합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="226"/>
+        <location filename="../model/eol/ResultStore.cpp" line="227"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 시작된 적이 없습니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="228"/>
+        <location filename="../model/eol/ResultStore.cpp" line="229"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>제품 %1(시리얼 %2)은(는) 이미 %3(으)로 기록되어 있습니다. 기존 기록을 유지합니다</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="250"/>
+        <location filename="../model/eol/ResultStore.cpp" line="251"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>제품 %1(시리얼 %2)은(는) 결과 데이터베이스에서 진행 중이 아닙니다: 시작된 적이 없거나, 이미 끝났거나, 중단됨으로 표시되었습니다</translation>
     </message>
@@ -16628,49 +16628,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>%1을(를) 열 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="89"/>
+        <source>read twice: a read of the same length was unanswered, and the first reply could have been its late answer</source>
+        <translation>두 번 읽음: 같은 길이의 읽기가 응답 없이 남아 있어 첫 응답이 그 지연 응답일 수 있었습니다</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="102"/>
+        <source>replies disagree: late answers to earlier reads are likely</source>
+        <translation>응답이 일치하지 않음: 이전 읽기에 대한 지연 응답일 가능성이 높습니다</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1이(가) 열려 있지 않습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="160"/>
         <source>send failed</source>
         <translation>송신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="186"/>
         <source>interrupted while waiting</source>
         <translation>대기 중 중단됨</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 이내에 응답 없음</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="226"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>다른 응답이 이어졌습니다: 이 응답은 이전 요청에 대한 것일 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="253"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>드라이브 자체 통신 형식에는 시리얼 포트가 필요합니다. Modbus TCP 게이트웨이는 라인을 스스로 설정합니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="269"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>라인을 %1(으)로 전환할 수 없습니다: %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="312"/>
         <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
         <translation>%1 ms 이내에 응답 없음 (이전 요청에 대한 지연 응답은 폐기함)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="334"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>슬레이브 %1의 응답, 기대값 %2</translation>
@@ -16689,29 +16699,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 불일치</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
         <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="362"/>
         <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
         <translation>지연 응답 폐기: 요청 후 %1 ms에 수신 완료. 응답은 선로에서 최소 %2 ms가 걸립니다</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="378"/>
         <source> (connection closed)</source>
         <translation> (연결 끊김)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="393"/>
         <source>stale bytes discarded before sending</source>
         <translation>송신 전 남아 있던 바이트 버림</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="440"/>
         <source>late bytes discarded after an error</source>
         <translation>오류 후 늦게 온 바이트 버림</translation>
     </message>

@@ -13073,32 +13073,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="64"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>已中断：工位在产品测试完成前停止（被终止、断电或崩溃）；该产品未经验证</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="71"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>a unit needs a serial number</source>
         <translation>产品需要序列号</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="196"/>
+        <location filename="../model/eol/ResultStore.cpp" line="197"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>产品只能以 pass、fail、error 或 aborted 结束，而不是 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="226"/>
+        <location filename="../model/eol/ResultStore.cpp" line="227"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>产品 %1（序列号 %2）从未在结果数据库中开始测试</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="228"/>
+        <location filename="../model/eol/ResultStore.cpp" line="229"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>产品 %1（序列号 %2）已记录为 %3；保留其记录</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="250"/>
+        <location filename="../model/eol/ResultStore.cpp" line="251"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>产品 %1（序列号 %2）在结果数据库中不处于进行中：从未开始，或已完成，或已标记为中断</translation>
     </message>
@@ -16628,49 +16628,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="89"/>
+        <source>read twice: a read of the same length was unanswered, and the first reply could have been its late answer</source>
+        <translation>读取两次：同样长度的读取尚未得到应答，第一个应答可能是它的迟到应答</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="102"/>
+        <source>replies disagree: late answers to earlier reads are likely</source>
+        <translation>应答不一致：很可能是之前读取的迟到应答</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未打开</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="160"/>
         <source>send failed</source>
         <translation>发送失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="186"/>
         <source>interrupted while waiting</source>
         <translation>等待时被中断</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 内无应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="226"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之后又收到一个应答：这个应答可能是对之前请求的应答</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="253"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>驱动器自己的通信格式需要串口；Modbus TCP 网关自行设定它的线路</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="269"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>无法把线路切换到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="312"/>
         <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
         <translation>%1 ms 内无应答（之前请求的迟到应答已丢弃）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="334"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>来自从站 %1 的应答，预期为 %2</translation>
@@ -16689,29 +16699,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
         <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="362"/>
         <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
         <translation>已丢弃迟到应答：请求后 %1 ms 即接收完毕，而应答在线路上至少需要 %2 ms</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="378"/>
         <source> (connection closed)</source>
         <translation> （连接已关闭）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="393"/>
         <source>stale bytes discarded before sending</source>
         <translation>发送前丢弃了残留字节</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="440"/>
         <source>late bytes discarded after an error</source>
         <translation>出错后丢弃了迟到的字节</translation>
     </message>

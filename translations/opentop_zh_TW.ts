@@ -13073,32 +13073,32 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
 <context>
     <name>opentop::ResultStore</name>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="63"/>
+        <location filename="../model/eol/ResultStore.cpp" line="64"/>
         <source>interrupted: the station stopped before the unit was finished (killed, power lost or crashed); the unit was not proven</source>
         <translation>已中斷：工站在產品測試完成前停止 (被終止、斷電或當機)；此產品未經驗證</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="71"/>
+        <location filename="../model/eol/ResultStore.cpp" line="72"/>
         <source>a unit needs a serial number</source>
         <translation>產品需要序號</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="196"/>
+        <location filename="../model/eol/ResultStore.cpp" line="197"/>
         <source>a unit is finished with pass, fail, error or aborted, not %1</source>
         <translation>產品只能以 pass、fail、error 或 aborted 結束，而非 %1</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="226"/>
+        <location filename="../model/eol/ResultStore.cpp" line="227"/>
         <source>unit %1 (serial %2) was never begun in the results database</source>
         <translation>產品 %1 (序號 %2) 從未在結果資料庫中開始</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="228"/>
+        <location filename="../model/eol/ResultStore.cpp" line="229"/>
         <source>unit %1 (serial %2) is already recorded as %3; its record is kept</source>
         <translation>產品 %1 (序號 %2) 已記錄為 %3；保留其記錄</translation>
     </message>
     <message>
-        <location filename="../model/eol/ResultStore.cpp" line="250"/>
+        <location filename="../model/eol/ResultStore.cpp" line="251"/>
         <source>unit %1 (serial %2) is not running in the results database: it was never begun, or was already finished or marked interrupted</source>
         <translation>產品 %1 (序號 %2) 在結果資料庫中並非測試中：從未開始，或已完成或已標記為中斷</translation>
     </message>
@@ -16628,49 +16628,59 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="80"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="89"/>
+        <source>read twice: a read of the same length was unanswered, and the first reply could have been its late answer</source>
+        <translation>讀取兩次：同樣長度的讀取尚未得到回應，第一個回應可能是它的延遲回應</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="102"/>
+        <source>replies disagree: late answers to earlier reads are likely</source>
+        <translation>回應不一致：很可能是先前讀取的延遲回應</translation>
+    </message>
+    <message>
+        <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
         <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
         <source>%1 is not open</source>
         <translation>%1 未開啟</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="125"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="160"/>
         <source>send failed</source>
         <translation>傳送失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="151"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="186"/>
         <source>interrupted while waiting</source>
         <translation>等待中被中斷</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="155"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
         <location filename="../transport/MockBackend.cpp" line="101"/>
         <source>no reply within %1 ms</source>
         <translation>%1 ms 內無回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="190"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="226"/>
         <source>another reply followed: this one may have answered an earlier request</source>
         <translation>之後又收到另一個回應：此回應可能是對先前請求的回應</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="217"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="253"/>
         <source>a drive&apos;s own line format needs a serial port; a Modbus TCP gateway sets its line itself</source>
         <translation>驅動器自己的通訊格式需要序列埠；Modbus TCP 閘道器自行設定它的線路</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="233"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="269"/>
         <source>cannot switch the line to %1: %2</source>
         <translation>無法把線路切換到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="276"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="312"/>
         <source>no reply within %1 ms (a late reply to an earlier request was discarded)</source>
         <translation>%1 ms 內無回應（先前請求的延遲回應已丟棄）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="298"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="334"/>
         <location filename="../transport/RtuFrame.cpp" line="140"/>
         <source>reply from slave %1, expected %2</source>
         <translation>回應來自從站 %1，預期為 %2</translation>
@@ -16689,29 +16699,29 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>CRC 不符</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="308"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
         <location filename="../transport/RtuBackend.cpp" line="185"/>
         <location filename="../transport/TcpBackend.cpp" line="113"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="322"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="362"/>
         <source>late reply discarded: complete %1 ms after the request, where an answer needs at least %2 ms on the wire</source>
         <translation>已丟棄延遲回應：請求後 %1 ms 即接收完畢，而回應在線路上至少需要 %2 ms</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="338"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="378"/>
         <source> (connection closed)</source>
         <translation> (連線已關閉)</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="353"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="393"/>
         <source>stale bytes discarded before sending</source>
         <translation>傳送前已捨棄殘留位元組</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusBackend.cpp" line="399"/>
+        <location filename="../transport/LibmodbusBackend.cpp" line="440"/>
         <source>late bytes discarded after an error</source>
         <translation>錯誤後已捨棄延遲到達的位元組</translation>
     </message>
