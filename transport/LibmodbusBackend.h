@@ -77,7 +77,7 @@ protected:
     virtual bool applyLineFormat(const LineFormat& format, QString* error);
 
     // The connection's descriptor read directly (LineInput).
-    LineInput input() const { return LineInput(m_modbus, *this); }
+    LineInput input() const { return LineInput(descriptor(), *this); }
     int waitReadable(double timeoutMs) const { return input().waitReadable(timeoutMs); }
     int readSome(char* buffer, int maximum) const { return input().readSome(buffer, maximum); }
     // Fills `result` with a PortError; closes the backend when the error is fatal.
@@ -89,7 +89,6 @@ protected:
     void suspectUntil(quint8 slave, double untilMs) { m_late.suspectUntil(slave, untilMs); }
     double clockMs() const { return nowMs(); }
     _modbus* context() const { return m_modbus.get(); }
-    const LibmodbusContext& modbusContext() const { return m_modbus; }
     int descriptor() const { return m_modbus.socket(); }
 
 private:
