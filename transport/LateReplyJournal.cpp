@@ -45,7 +45,8 @@ void LateReplyJournal::write(const QVector<Entry>& entries) const
         return;
     }
     for (const Entry& e : entries)
-        file.write(QByteArray::number(e.slave) + ' ' + QByteArray::number(e.untilMs) + '\n');
+        file.write(QByteArray::number(e.slave) + ' ' + QByteArray::number(e.untilMs) + ' ' +
+                   QByteArray::number(e.function) + ' ' + QByteArray::number(e.count) + '\n');
     if (!file.commit())
         qCWarning(lcTransport) << "late-reply journal:" << file.errorString();
 }
@@ -62,15 +63,21 @@ QVector<LateReplyJournal::Entry> LateReplyJournal::take(qint64 nowMs) const
     QFile::remove(m_path);
     for (const QByteArray& line : lines) {
         const QList<QByteArray> fields = line.split(' ');
-        if (fields.size() != 2)
+        if (fields.size() != 4)
             continue;
         bool slaveOk = false;
         bool untilOk = false;
+        bool functionOk = false;
+        bool countOk = false;
         const uint slave = fields[0].toUInt(&slaveOk);
         const qint64 until = fields[1].toLongLong(&untilOk);
-        if (slaveOk && untilOk && slave >= 1 && slave <= 247 && until > nowMs &&
-            until - nowMs < 60 * 1000)
-            entries.append(Entry{quint8(slave), until});
+        const uint function = fields[2].toUInt(&functionOk);
+        const int count = fields[3].toInt(&countOk);
+        // Modbus functions are 1..127; no request reads more than 2000 coils.
+        if (slaveOk && untilOk && functionOk && countOk && slave >= 1 && slave <= 247 &&
+            until > nowMs && until - nowMs < 60 * 1000 && function <= 127 && count >= 0 &&
+            count <= 2000 && (function != 0 || count == 0))
+            entries.append(Entry{quint8(slave), until, quint8(function), count});
     }
     return entries;
 }

@@ -14,6 +14,7 @@ namespace opentop {
 // own, written when the port is closed and taken (read, then removed) when it is opened. A
 // program killed first leaves none; LateReplyWatch::opened() then still checks each drive's
 // first exchange. Times are wall-clock ms since the epoch: the two programs share no clock.
+// A line per entry: "slave until function count".
 class LateReplyJournal
 {
 public:
@@ -21,6 +22,8 @@ public:
     {
         quint8 slave = 0;
         qint64 untilMs = 0;
+        quint8 function = 0; // with `count`: the shape of a request left unanswered; 0: none
+        int count = 0;
     };
 
     // `device`: the port's canonical path (/dev/ttyUSB0, /dev/pts/3).

@@ -82,35 +82,54 @@ void LateReplyWatch::unanswered(const ModbusRequest& request, double nowMs, int 
     m_unanswered.append(Shape{request.slave, request.function, request.count, untilMs});
 }
 
-bool LateReplyWatch::ambiguous(const ModbusRequest& request, double nowMs)
+void LateReplyWatch::forgetUnansweredOver(double nowMs)
 {
     m_unanswered.erase(std::remove_if(m_unanswered.begin(), m_unanswered.end(),
                                       [nowMs](const Shape& s) { return s.untilMs <= nowMs; }),
                        m_unanswered.end());
+}
+
+bool LateReplyWatch::ambiguous(const ModbusRequest& request, double nowMs)
+{
+    forgetUnansweredOver(nowMs);
     return std::any_of(m_unanswered.begin(), m_unanswered.end(), [&](const Shape& s) {
-        return s.slave == request.slave &&
-               (s.function == 0 || (s.function == request.function && s.count == request.count));
+        return s.slave == request.slave && s.function == request.function &&
+               s.count == request.count;
     });
 }
 
-void LateReplyWatch::suspectUntil(quint8 slave, double untilMs)
+void LateReplyWatch::suspectUntil(const Suspect& suspect)
 {
-    m_unanswered.append(Shape{slave, 0, 0, untilMs});
+    if (suspect.function != 0) {
+        const auto same =
+            std::find_if(m_unanswered.begin(), m_unanswered.end(), [&](const Shape& s) {
+                return s.slave == suspect.slave && s.function == suspect.function &&
+                       s.count == suspect.count;
+            });
+        if (same == m_unanswered.end())
+            m_unanswered.append(
+                Shape{suspect.slave, suspect.function, suspect.count, suspect.untilMs});
+        else
+            same->untilMs = std::max(same->untilMs, suspect.untilMs);
+    }
     for (Entry& e : m_suspects) {
-        if (e.slave == slave) {
-            e.wait.untilMs = std::max(e.wait.untilMs, untilMs);
+        if (e.slave == suspect.slave) {
+            e.wait.untilMs = std::max(e.wait.untilMs, suspect.untilMs);
             return;
         }
     }
-    m_suspects.append(Entry{slave, {untilMs, 0}});
+    m_suspects.append(Entry{suspect.slave, {suspect.untilMs, 0}});
 }
 
 QVector<LateReplyWatch::Suspect> LateReplyWatch::suspects(double nowMs)
 {
     forgetOver(&m_suspects, nowMs);
+    forgetUnansweredOver(nowMs);
     QVector<Suspect> left;
     for (const Entry& e : m_suspects)
-        left.append(Suspect{e.slave, e.wait.untilMs});
+        left.append(Suspect{e.slave, e.wait.untilMs, 0, 0});
+    for (const Shape& s : m_unanswered)
+        left.append(Suspect{s.slave, s.untilMs, s.function, s.count});
     return left;
 }
 

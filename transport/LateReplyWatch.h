@@ -49,22 +49,27 @@ public:
     // matrix: a reply 1 s late answered a read of the same length).
     void suspect(quint8 slave, double nowMs, int timeoutMs);
     bool isSuspect(quint8 slave, double nowMs);
-    // A suspect until `untilMs` whatever its exchanges show: the line's previous user gave up
-    // on a request to it (LateReplyJournal).
-    void suspectUntil(quint8 slave, double untilMs);
-    // A request that got no answer it could take, at `nowMs`: until the suspect window is
-    // over, a reply of its shape (function and length) may still be its late answer.
-    void unanswered(const ModbusRequest& request, double nowMs, int timeoutMs);
-    // A good reply to `request` may be the late answer to an earlier request of the same shape
-    // to the same slave (unanswered(); any shape for a slave the line's previous user left):
-    // it must be confirmed (LibmodbusBackend reads again).
-    bool ambiguous(const ModbusRequest& request, double nowMs);
     struct Suspect
     {
         quint8 slave = 0;
         double untilMs = 0;
+        quint8 function = 0; // with `count`, a request of this shape is unanswered; 0: none
+        int count = 0;
     };
-    // The suspects not yet over at `nowMs`, for the line's next user.
+    // A suspect until `untilMs` whatever its exchanges show: the line's previous user gave up
+    // on a request to it (LateReplyJournal), of the suspect's shape if it has one.
+    void suspectUntil(const Suspect& suspect);
+    // A request that got no answer it could take, at `nowMs`: until the suspect window is
+    // over, a reply of its shape (function and length) may still be its late answer.
+    void unanswered(const ModbusRequest& request, double nowMs, int timeoutMs);
+    // A good reply to `request` may be the late answer to an earlier request of the same shape
+    // to the same slave (unanswered(), or left by the line's previous user): it must be
+    // confirmed (LibmodbusBackend reads again). Only that shape: a late reply of another
+    // function or length fails RtuFrame::decodeReply's checks, and confirming every read of a
+    // drive for seconds halved a monitor's rate after a scan.
+    bool ambiguous(const ModbusRequest& request, double nowMs);
+    // What is not yet over at `nowMs`, for the line's next user: each suspect slave (function
+    // 0), and each unanswered shape.
     QVector<Suspect> suspects(double nowMs);
     // An exchange with `slave` went well with no reply behind it (or none looked for): a reply
     // the line's previous user left unanswered can no longer come from it (isSuspect()).
@@ -77,12 +82,13 @@ private:
         Wait wait;
     };
     static void forgetOver(QVector<Entry>* entries, double nowMs);
+    void forgetUnansweredOver(double nowMs);
 
     QVector<Entry> m_waits; // slaves that timed out silently, quiet time not yet over
     struct Shape
     {
         quint8 slave = 0;
-        quint8 function = 0; // 0: any (from the line's previous user)
+        quint8 function = 0;
         int count = 0;
         double untilMs = 0;
     };

@@ -86,7 +86,7 @@ protected:
     // Who may still answer a request given up on, for the line's next user, and the same
     // from the line's previous user (LateReplyJournal); times on clockMs()'s clock.
     QVector<LateReplyWatch::Suspect> lateSuspects() { return m_late.suspects(nowMs()); }
-    void suspectUntil(quint8 slave, double untilMs) { m_late.suspectUntil(slave, untilMs); }
+    void suspectUntil(const LateReplyWatch::Suspect& suspect) { m_late.suspectUntil(suspect); }
     double clockMs() const { return nowMs(); }
     _modbus* context() const { return m_modbus.get(); }
     int descriptor() const { return m_modbus.socket(); }

@@ -59,7 +59,7 @@ bool RtuBackend::open(QString* error)
     const qint64 wallMs = QDateTime::currentMSecsSinceEpoch();
     const double nowMs = clockMs();
     for (const LateReplyJournal::Entry& e : journal().take(wallMs))
-        suspectUntil(e.slave, nowMs + double(e.untilMs - wallMs));
+        suspectUntil({e.slave, nowMs + double(e.untilMs - wallMs), e.function, e.count});
     return true;
 }
 
@@ -77,7 +77,8 @@ void RtuBackend::close()
         const double nowMs = clockMs();
         QVector<LateReplyJournal::Entry> entries;
         for (const LateReplyWatch::Suspect& s : lateSuspects())
-            entries.append({s.slave, wallMs + qint64(std::ceil(s.untilMs - nowMs))});
+            entries.append(
+                {s.slave, wallMs + qint64(std::ceil(s.untilMs - nowMs)), s.function, s.count});
         journal().write(entries);
     }
     m_lineReport = SerialLineReport();

@@ -140,8 +140,16 @@ QStringList scanWhileMonitoring(const QVector<Placement>& drives, int baud, quin
     QEventLoop after;
     QTimer::singleShot(500, &after, &QEventLoop::quit);
     after.exec();
-    if (hub.statistics(monitored).samples <= samplesBefore)
-        *error = QStringLiteral("monitoring did not go on after the scan");
+    const MonitorHub::Statistics stats = hub.statistics(monitored);
+    if (stats.samples <= samplesBefore)
+        *error = QStringLiteral("monitoring did not go on after the scan at %1 bit/s: %2 samples "
+                                "before, %3 after, %4 errors, %5 in a row, held %6")
+                     .arg(baud)
+                     .arg(samplesBefore)
+                     .arg(stats.samples)
+                     .arg(stats.errors)
+                     .arg(stats.errorsInRow)
+                     .arg(client.isPollingHeld());
     return result;
 }
 

@@ -21,12 +21,16 @@ TEST(LateReplyJournalTest, EntriesGoFromOneProgramToTheNextOnce)
     QTemporaryDir dir;
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     const LateReplyJournal journal(QStringLiteral("/dev/ttyUSB0"), dir.path());
-    journal.write({{3, now + 2000}, {7, now - 5}});
+    journal.write({{3, now + 2000, 0x04, 5}, {7, now - 5}, {9, now + 900}});
     ASSERT_TRUE(QFile::exists(journal.path()));
     const QVector<LateReplyJournal::Entry> taken = journal.take(now);
-    ASSERT_EQ(taken.size(), 1) << "an entry already over is dropped";
+    ASSERT_EQ(taken.size(), 2) << "an entry already over is dropped";
     EXPECT_EQ(taken[0].slave, 3);
     EXPECT_EQ(taken[0].untilMs, now + 2000);
+    EXPECT_EQ(taken[0].function, 0x04) << "the shape of the request left unanswered";
+    EXPECT_EQ(taken[0].count, 5);
+    EXPECT_EQ(taken[1].slave, 9);
+    EXPECT_EQ(taken[1].function, 0) << "a suspect without a request left unanswered";
     EXPECT_FALSE(QFile::exists(journal.path())) << "taken once";
     EXPECT_TRUE(journal.take(now).isEmpty());
     // Another device's journal is another file.
@@ -44,13 +48,19 @@ TEST(LateReplyJournalTest, AFileThatIsNotAJournalGivesNothing)
     const LateReplyJournal journal(QStringLiteral("/dev/ttyUSB0"), dir.path());
     QFile file(journal.path());
     ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write("0 99999999999999\n300 " + QByteArray::number(now + 1000) + "\nx y\n\n" + "5 " +
-               QByteArray::number(now + 3600 * 1000) + "\n" + "9 " + QByteArray::number(now + 500) +
-               "\n");
+    const QByteArray soon = QByteArray::number(now + 1000);
+    file.write("0 99999999999999 3 1\n300 " + soon + " 3 1\nx y\n\n" + "5 " +
+               QByteArray::number(now + 3600 * 1000) + " 3 1\n" + "6 " + soon + "\n" + "7 " + soon +
+               " 200 1\n" + "8 " + soon + " 3 60000\n" + "10 " + soon + " 0 4\n" + "9 " +
+               QByteArray::number(now + 500) + " 3 2\n");
     file.close();
     const QVector<LateReplyJournal::Entry> taken = journal.take(now);
-    ASSERT_EQ(taken.size(), 1) << "no broadcast, no number above 247, nothing an hour away";
+    ASSERT_EQ(taken.size(), 1) << "no broadcast, no number above 247, nothing an hour away, "
+                                  "no line without a shape, no function above 127, no count "
+                                  "above 2000, no count without a function";
     EXPECT_EQ(taken[0].slave, 9);
+    EXPECT_EQ(taken[0].function, 3);
+    EXPECT_EQ(taken[0].count, 2);
 }
 
 namespace {
@@ -110,4 +120,40 @@ TEST(LateReplyJournalTest, TheNextProgramChecksEveryReplyOfADriveTheLastOneGaveU
     const ModbusResult again = next->transact(readOf(0x0401), 300);
     ASSERT_EQ(again.error, ModbusError::Ok) << again.errorText().toStdString();
     EXPECT_EQ(again.registers, QVector<quint16>({0x0401}));
+}
+
+// Issue 28 follow-up: only the shape the previous program left unanswered is read twice. A late
+// reply of another function or length fails the frame's checks; reading every block of the
+// drive twice for seconds halved a monitor's rate after a scan (CI, ScanWhileMonitoringE2e).
+TEST(LateReplyJournalTest, TheNextProgramReadsTwiceOnlyTheShapeTheLastOneLeftUnanswered)
+{
+    std::atomic<int> requests{0};
+    PtyDevice device;
+    device.start([&requests](const QByteArray& request) {
+        ModbusRequest r;
+        RtuFrame::decodeRequest(request, &r);
+        ++requests;
+        Answer a;
+        if (r.address == 0x0311)
+            return a; // silent
+        QVector<quint16> values;
+        for (int i = 0; i < r.count; ++i)
+            values << quint16(r.address + i);
+        a.bytes = RtuFrame::encodeReadReply(1, 0x03, values);
+        return a;
+    });
+    {
+        auto first = openOn(device);
+        EXPECT_EQ(first->transact(readOf(0x0311), 100).error, ModbusError::Timeout);
+    }
+    auto next = openOn(device);
+    requests = 0;
+    const ModbusResult other = next->transact(ModbusRequest::readHolding(1, 0x0100, 2), 300);
+    ASSERT_EQ(other.error, ModbusError::Ok) << other.errorText().toStdString();
+    EXPECT_EQ(requests.load(), 1) << "a read of two registers cannot take a one-register reply";
+    requests = 0;
+    const ModbusResult same = next->transact(readOf(0x0401), 300);
+    ASSERT_EQ(same.error, ModbusError::Ok) << same.errorText().toStdString();
+    EXPECT_EQ(same.registers, QVector<quint16>({0x0401}));
+    EXPECT_EQ(requests.load(), 2) << "the shape left unanswered is read twice";
 }
