@@ -17,7 +17,11 @@
 #include <QEventLoop>
 #include <QTimer>
 #include <atomic>
+#ifdef Q_OS_WIN
+#include <windows.h>
+#else
 #include <csignal>
+#endif
 
 namespace opentop {
 
@@ -25,11 +29,33 @@ namespace {
 
 std::atomic<bool> g_interrupted{false};
 
+#ifdef Q_OS_WIN
+// The console's Ctrl-C, Ctrl-Break and close, on a thread Windows starts for the event.
+BOOL WINAPI onConsoleControl(DWORD event)
+{
+    switch (event) {
+    case CTRL_C_EVENT:
+    case CTRL_BREAK_EVENT:
+        g_interrupted.store(true);
+        return TRUE;
+    case CTRL_CLOSE_EVENT:
+        // The window closed (as SIGHUP on a dropped ssh session): Windows ends the process
+        // when this returns, or after 5 s. Waiting lets the current transaction complete and
+        // the command report what was done; the process ends with it before the wait does.
+        g_interrupted.store(true);
+        Sleep(4000);
+        return TRUE;
+    default:
+        return FALSE;
+    }
+}
+#else
 extern "C" void onInterrupt(int)
 {
     // Stop between transactions: the current one completes, nothing new starts.
     g_interrupted.store(true);
 }
+#endif
 
 } // namespace
 
@@ -68,6 +94,9 @@ CliContext::~CliContext()
 
 void CliContext::installInterruptHandler()
 {
+#ifdef Q_OS_WIN
+    SetConsoleCtrlHandler(onConsoleControl, TRUE);
+#else
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
     // A dropped ssh session: stop between transactions and report like Ctrl-C, never die in
@@ -77,6 +106,7 @@ void CliContext::installInterruptHandler()
     // Output piped into `head` or a `less` quit early: the pipe closing must not end a restore
     // halfway. Writes to it fail instead (CliApp::finishOutput says so on stderr).
     std::signal(SIGPIPE, SIG_IGN);
+#endif
 #endif
 }
 

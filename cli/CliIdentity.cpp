@@ -3,13 +3,43 @@
 #include "cli/CliContext.h"
 
 #include <cstdio>
+#ifdef Q_OS_WIN
+#include <windows.h>
+
+#include <io.h>
+#else
 #include <termios.h>
 #include <unistd.h>
+#endif
 
 namespace opentop {
 
 namespace {
 
+#ifdef Q_OS_WIN
+// One line from the console with echo off; nullopt when standard input is not a console.
+std::optional<QString> readHidden(CliContext& context, const QString& prompt)
+{
+    HANDLE in = GetStdHandle(STD_INPUT_HANDLE);
+    DWORD old = 0;
+    if (!_isatty(_fileno(stdin)) || !GetConsoleMode(in, &old))
+        return std::nullopt;
+    context.err() << prompt;
+    context.err().flush();
+    SetConsoleMode(in, old & ~DWORD(ENABLE_ECHO_INPUT));
+    // The console's own characters (UTF-16), not the code page stdin would convert them to.
+    QString line;
+    wchar_t c = 0;
+    DWORD got = 0;
+    while (ReadConsoleW(in, &c, 1, &got, nullptr) && got == 1 && c != L'\n' && c != L'\r')
+        line.append(QChar(c));
+    if (c == L'\r') // the console ends a line with CR LF: the LF must not start the next read
+        ReadConsoleW(in, &c, 1, &got, nullptr);
+    SetConsoleMode(in, old);
+    context.err() << Qt::endl;
+    return line;
+}
+#else
 // One line from the terminal with echo off; nullopt when standard input is not a terminal.
 std::optional<QString> readHidden(CliContext& context, const QString& prompt)
 {
@@ -33,6 +63,7 @@ std::optional<QString> readHidden(CliContext& context, const QString& prompt)
     context.err() << Qt::endl;
     return QString::fromUtf8(line);
 }
+#endif
 
 } // namespace
 

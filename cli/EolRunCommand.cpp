@@ -16,6 +16,7 @@
 #include "model/eol/StationSafeState.h"
 #include "model/eol/UnitValuesCsv.h"
 #include "model/io/DisplayText.h"
+#include "model/io/SystemUser.h"
 #include "model/profile/ProfileRegistry.h"
 #include "model/station/UnitStartGate.h"
 #include "transport/ModbusClient.h"
@@ -26,8 +27,6 @@
 #include <QHostInfo>
 #include <QTimer>
 #include <memory>
-#include <pwd.h>
-#include <unistd.h>
 
 namespace opentop {
 
@@ -252,10 +251,8 @@ int EolRunCommand::run(CliContext& context, const QStringList& args)
     options.operatorName = identity->user.isEmpty() ? parser.value(kOperator) : identity->user;
     options.approvalId = identity->approvalId;
     options.approver = identity->approver;
-    if (options.operatorName.isEmpty()) {
-        const passwd* user = ::getpwuid(::geteuid());
-        options.operatorName = user ? QString::fromLocal8Bit(user->pw_name) : QString();
-    }
+    if (options.operatorName.isEmpty())
+        options.operatorName = SystemUser::loginName();
     options.recipeChecksum = checksum;
     options.unitValues = *values;
     options.assertedVariants = *asserted;

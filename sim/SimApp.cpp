@@ -2,7 +2,9 @@
 
 #include "sim/DcPidSimDevice.h"
 
+#include "sim/ConsoleInput.h"
 #include "sim/PtySimServer.h"
+#include "sim/QuitSignals.h"
 #include "sim/SimBus.h"
 #include "sim/SimConsole.h"
 #include "sim/SimLog.h"
@@ -10,29 +12,11 @@
 
 #include <QCoreApplication>
 #include <QLoggingCategory>
-#include <QSocketNotifier>
-#include <cerrno>
-#include <csignal>
 #include <cstdio>
-#include <fcntl.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 namespace opentop {
 
 namespace {
-
-int g_signalWriteFd = -1;
-
-void onPosixSignal(int)
-{
-    const char byte = 1;
-    if (g_signalWriteFd >= 0) {
-        // A full pipe already holds a wake-up: nothing to do when the write fails.
-        const ssize_t written = ::write(g_signalWriteFd, &byte, 1);
-        static_cast<void>(written);
-    }
-}
 
 void printOut(const QString& text)
 {
@@ -58,24 +42,6 @@ SimApp::SimApp(QObject* parent)
 SimApp::~SimApp()
 {
     shutdown();
-    if (g_signalWriteFd == m_signalFds[0])
-        g_signalWriteFd = -1;
-    for (int fd : m_signalFds) {
-        if (fd >= 0)
-            ::close(fd);
-    }
-}
-
-void SimApp::installSignalHandlers(int writeFd)
-{
-    g_signalWriteFd = writeFd;
-    struct sigaction action = {};
-    action.sa_handler = onPosixSignal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
-    ::sigaction(SIGINT, &action, nullptr);
-    ::sigaction(SIGTERM, &action, nullptr);
-    ::signal(SIGPIPE, SIG_IGN);
 }
 
 int SimApp::start(const QStringList& arguments)
@@ -140,13 +106,8 @@ int SimApp::start(const QStringList& arguments)
         }
     }
 
-    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, m_signalFds) == 0) {
-        for (int fd : m_signalFds)
-            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
-        installSignalHandlers(m_signalFds[0]);
-        m_signals = new QSocketNotifier(m_signalFds[1], QSocketNotifier::Read, this);
-        connect(m_signals, &QSocketNotifier::activated, this, &SimApp::onSignal);
-    }
+    m_signals = new QuitSignals(this);
+    connect(m_signals, &QuitSignals::received, this, &SimApp::onSignal);
 
     const WireTiming timing(m_options.baud, m_options.parity, m_options.turnaroundMs);
     if (m_options.pty) {
@@ -185,22 +146,16 @@ int SimApp::start(const QStringList& arguments)
                 return SimControlResult{true, QStringLiteral("pty: ") + pty->slavePath()};
             });
     }
-    m_stdin = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, this);
-    connect(m_stdin, &QSocketNotifier::activated, this, &SimApp::onStdin);
+    m_stdin = new ConsoleInput(this);
+    connect(m_stdin, &ConsoleInput::received, this, &SimApp::onStdin);
     connect(qApp, &QCoreApplication::aboutToQuit, this, &SimApp::shutdown);
     printOut(QStringLiteral("ready"));
     return -1;
 }
 
-void SimApp::onStdin()
+void SimApp::onStdin(const QByteArray& bytes, bool eof)
 {
-    // One read per notification: stdin stays blocking (it may be the user's terminal, shared
-    // with the shell), and the notifier says a read will not block.
-    char chunk[1024];
-    const ssize_t n = ::read(STDIN_FILENO, chunk, sizeof chunk);
-    const bool eof = n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR);
-    if (n > 0)
-        m_stdinBuffer.append(chunk, int(n));
+    m_stdinBuffer.append(bytes);
     if (eof && !m_stdinBuffer.isEmpty() && !m_stdinBuffer.endsWith('\n'))
         m_stdinBuffer.append('\n'); // a last command without a newline
     int newline;
@@ -215,17 +170,11 @@ void SimApp::onStdin()
             return;
         }
     }
-    if (eof) {
-        // No console (stdin at its end, e.g. /dev/null): keep serving until a signal.
-        m_stdin->setEnabled(false);
-    }
+    // At its end (no console, e.g. /dev/null) the simulator keeps serving until a signal.
 }
 
 void SimApp::onSignal()
 {
-    char byte;
-    while (::read(m_signalFds[1], &byte, 1) > 0) {
-    }
     qCInfo(lcSim) << "signal received, stopping";
     QCoreApplication::quit();
 }
@@ -237,7 +186,7 @@ void SimApp::shutdown()
     if (m_tcp)
         m_tcp->close();
     if (m_stdin)
-        m_stdin->setEnabled(false);
+        m_stdin->stop();
 }
 
 } // namespace opentop

@@ -5,17 +5,18 @@
 #include <QObject>
 #include <memory>
 
-class QSocketNotifier;
-
 namespace opentop {
 
+class ConsoleInput;
 class PtySimServer;
+class QuitSignals;
 class SimBus;
 class SimConsole;
 class TcpSimServer;
 
 // opentop-sim: options, the bus, its servers, the stdin console and clean shutdown on
-// SIGINT/SIGTERM/quit (exit 0, the pty symlink and its lock removed).
+// SIGINT/SIGTERM/quit (exit 0, the pty symlink and its lock removed); on Windows on the
+// console's Ctrl-C (QuitSignals), serving TCP only (PtySimServer_win.cpp refuses a pty).
 class SimApp : public QObject
 {
     Q_OBJECT
@@ -30,19 +31,17 @@ public:
     void shutdown();
 
 private:
-    void onStdin();
+    void onStdin(const QByteArray& bytes, bool eof);
     void onSignal();
-    static void installSignalHandlers(int writeFd);
 
     SimOptions m_options;
     std::shared_ptr<SimBus> m_bus;
     std::unique_ptr<SimConsole> m_console;
     PtySimServer* m_pty = nullptr;
     TcpSimServer* m_tcp = nullptr;
-    QSocketNotifier* m_stdin = nullptr;
-    QSocketNotifier* m_signals = nullptr;
+    ConsoleInput* m_stdin = nullptr;
+    QuitSignals* m_signals = nullptr;
     QByteArray m_stdinBuffer;
-    int m_signalFds[2] = {-1, -1};
 };
 
 } // namespace opentop

@@ -6,7 +6,9 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
+#ifndef Q_OS_WIN
 #include <unistd.h>
+#endif
 
 namespace opentop {
 
@@ -22,7 +24,11 @@ QString LateReplyJournal::defaultDirectory()
     const QString custom = qEnvironmentVariable("OPENTOP_LATE_JOURNAL_DIR");
     if (!custom.isEmpty())
         return custom;
+#ifdef Q_OS_WIN // the temporary folder is the user's own there
+    return QDir::temp().filePath(QStringLiteral("opentop-late"));
+#else
     return QDir::temp().filePath(QStringLiteral("opentop-late-%1").arg(::getuid()));
+#endif
 }
 
 void LateReplyJournal::write(const QVector<Entry>& entries) const

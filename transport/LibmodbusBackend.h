@@ -77,7 +77,7 @@ protected:
     virtual bool applyLineFormat(const LineFormat& format, QString* error);
 
     // The connection's descriptor read directly (LineInput).
-    LineInput input() const { return LineInput(descriptor(), *this); }
+    LineInput input() const { return LineInput(m_modbus, *this); }
     int waitReadable(double timeoutMs) const { return input().waitReadable(timeoutMs); }
     int readSome(char* buffer, int maximum) const { return input().readSome(buffer, maximum); }
     // Fills `result` with a PortError; closes the backend when the error is fatal.
@@ -89,6 +89,7 @@ protected:
     void suspectUntil(const LateReplyWatch::Suspect& suspect) { m_late.suspectUntil(suspect); }
     double clockMs() const { return nowMs(); }
     _modbus* context() const { return m_modbus.get(); }
+    const LibmodbusContext& modbusContext() const { return m_modbus; }
     int descriptor() const { return m_modbus.socket(); }
 
 private:

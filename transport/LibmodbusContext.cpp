@@ -7,6 +7,10 @@
 #include <cerrno>
 #include <cmath>
 #include <modbus.h>
+#ifdef Q_OS_WIN
+#include "transport/ComPort_win.h"
+#include "transport/WinError_win.h"
+#endif
 
 namespace opentop {
 
@@ -24,11 +28,20 @@ int LibmodbusContext::connect(_modbus* ctx, double responseTimeoutMs, int byteTi
     setResponseTimeout(responseTimeoutMs);
     setByteTimeout(byteTimeoutMs);
     if (modbus_connect(m_ctx) == -1) {
-        const int err = errno;
+        int err = errno;
+#ifdef Q_OS_WIN
+        // libmodbus' Win32 serial open leaves errno alone (the system's last error says why);
+        // its TCP connect may leave a Winsock code in it.
+        err = WinError::connectErrno(err);
+#endif
         modbus_free(m_ctx);
         m_ctx = nullptr;
         return err;
     }
+#ifdef Q_OS_WIN
+    if (modbus_get_socket(m_ctx) < 0) // a COM port: no socket
+        m_comm = ComPort::handleOf(m_ctx);
+#endif
     modbus_flush(m_ctx);
     return 0;
 }
@@ -40,12 +53,22 @@ void LibmodbusContext::reset()
     modbus_close(m_ctx);
     modbus_free(m_ctx);
     m_ctx = nullptr;
+#ifdef Q_OS_WIN
+    m_comm = nullptr;
+#endif
 }
 
 int LibmodbusContext::socket() const
 {
     return m_ctx ? modbus_get_socket(m_ctx) : -1;
 }
+
+#ifdef Q_OS_WIN
+void* LibmodbusContext::commHandle() const
+{
+    return m_comm;
+}
+#endif
 
 void LibmodbusContext::setResponseTimeout(double ms)
 {
@@ -81,6 +104,10 @@ int LibmodbusContext::receive(quint8 slave, double timeoutMs, QByteArray* buffer
 
 QString LibmodbusContext::errorText(int err)
 {
+#ifdef Q_OS_WIN
+    if (const char* text = WinError::posixText(err)) // codes the Windows C library cannot name
+        return QString::fromLatin1(text);
+#endif
     return QString::fromLocal8Bit(modbus_strerror(err));
 }
 
@@ -95,7 +122,9 @@ bool LibmodbusContext::isFatal(int err)
     case ECONNABORTED:
     case EPIPE:
     case ENOTCONN:
+#ifdef ESHUTDOWN // not in MinGW's errno.h
     case ESHUTDOWN:
+#endif
         return true;
     default:
         return false;

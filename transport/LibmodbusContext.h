@@ -29,6 +29,11 @@ public:
     _modbus* get() const { return m_ctx; }
     // The connection's descriptor; -1 without a context.
     int socket() const;
+#ifdef Q_OS_WIN
+    // A COM port's HANDLE, which libmodbus keeps to itself on Windows (socket() is -1 there):
+    // found once connected (ComPort::handleOf); null for TCP, or when it cannot be found.
+    void* commHandle() const;
+#endif
 
     void setResponseTimeout(double ms);
     void setByteTimeout(int ms);
@@ -50,6 +55,9 @@ public:
 
 private:
     _modbus* m_ctx = nullptr;
+#ifdef Q_OS_WIN
+    void* m_comm = nullptr;
+#endif
 };
 
 } // namespace opentop

@@ -11,7 +11,13 @@
 #include <condition_variable>
 #include <deque>
 #include <mutex>
+#ifdef Q_OS_WIN
+#include <windows.h>
+
+#include <mmsystem.h>
+#else
 #include <sys/prctl.h>
+#endif
 
 namespace opentop {
 
@@ -253,9 +259,15 @@ int ModbusClientWorker::pendingCount() const
 
 void ModbusClientWorker::run(std::shared_ptr<State> state)
 {
+#ifdef Q_OS_WIN
+    // Windows' timer ticks every 15.6 ms by default: the line's gaps, sleeps and 1 ms polls
+    // (LineInput_win.cpp) need its finest, 1 ms, while the bus is in use.
+    timeBeginPeriod(1);
+#else
     // Linux lets a thread's timed waits end up to 50 µs late by default; the line's gaps and
     // waits are a few hundred µs long at 115200 bit/s, so this thread asks for 1 µs.
     ::prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
+#endif
     State& s = *state;
     for (;;) {
         std::unique_lock<std::mutex> lock(s.mutex);
@@ -327,6 +339,9 @@ void ModbusClientWorker::run(std::shared_ptr<State> state)
     backend->close();
     backend.reset();
     s.open = false;
+#ifdef Q_OS_WIN
+    timeEndPeriod(1);
+#endif
     s.exited.set_value();
 }
 

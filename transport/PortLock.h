@@ -21,7 +21,9 @@ namespace opentop {
 // A refusal names the holder where the system tells it: the lock file's PID and program, else
 // the flock's owner from /proc/locks, else a process with the device open (/proc/PID/fd).
 // A lock directory that cannot be written is no reason to refuse: the flock alone is used
-// (logged). Not thread-safe; one per open port.
+// (logged). Not thread-safe; one per open port. On Windows (PortLock_win.cpp) a COM port opens
+// exclusively: acquire() refuses a port another program has open, and holds a named mutex
+// for the port (what flock is here) for drivers that let a port be opened twice.
 class PortLock
 {
 public:
@@ -45,7 +47,7 @@ public:
     // Whether makeExclusive() sets exclusive mode on `fd`: a character device but not a pty.
     static bool wantsExclusive(int fd);
     void release();
-    bool isHeld() const { return m_fd >= 0; }
+    bool isHeld() const; // PortLock_posix.cpp, PortLock_win.cpp
     QString device() const { return m_device; }
     // The lock file written for this port; empty when none could be (flock only).
     QString lockFilePath() const;
@@ -69,6 +71,9 @@ private:
     QStringList m_directories;
     int m_fd = -1;
     std::unique_ptr<PortLockFile> m_file;
+#ifdef Q_OS_WIN
+    void* m_mutex = nullptr; // the named mutex that marks the port as an OpenTOP's
+#endif
 };
 
 } // namespace opentop

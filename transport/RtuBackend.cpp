@@ -1,6 +1,11 @@
 #include "transport/RtuBackend.h"
 
+#ifdef Q_OS_WIN
+#include "transport/ComPortDriver_win.h"
+#include "transport/ComPort_win.h"
+#else
 #include "transport/IoctlSerialDriver.h"
+#endif
 #include "transport/LateReplyJournal.h"
 #include "transport/RtuFrame.h"
 #include "transport/SerialSysfs.h"
@@ -70,7 +75,7 @@ LateReplyJournal RtuBackend::journal() const
 
 void RtuBackend::close()
 {
-    if (descriptor() >= 0) {
+    if (context()) { // open (a COM port has no descriptor on Windows)
         m_line.restore(*makeDriver());
         // For the line's next user: who may still answer a request we gave up on.
         const qint64 wallMs = QDateTime::currentMSecsSinceEpoch();
@@ -105,20 +110,27 @@ double RtuBackend::defaultFrameGapMs() const
 _modbus* RtuBackend::createContext()
 {
     const ConnectionSettings& s = settings();
-    return modbus_new_rtu(QFile::encodeName(s.port).constData(), s.baud, s.parity, s.dataBits,
-                          s.stopBits);
+#ifdef Q_OS_WIN
+    const QByteArray device = ComPort::devicePath(s.port.trimmed()).toLocal8Bit();
+#else
+    const QByteArray device = QFile::encodeName(s.port);
+#endif
+    return modbus_new_rtu(device.constData(), s.baud, s.parity, s.dataBits, s.stopBits);
 }
 
 QString RtuBackend::openErrorText(int err) const
 {
     QString text = LibmodbusBackend::openErrorText(err);
+#ifndef Q_OS_WIN // Windows has no dialout group: a port it refuses is one in use (EBUSY)
     if (err == EACCES)
-        text += QCoreApplication::translate(
-            "opentop::Transport",
-            ": your user may not open serial ports. Add it to the dialout group with\n"
-            "    sudo usermod -aG dialout $USER\n"
-            "then log out and in again (the group applies to new sessions only).");
-    else if (err == EINVAL && settings().parity != 'N')
+        return text +
+               QCoreApplication::translate(
+                   "opentop::Transport",
+                   ": your user may not open serial ports. Add it to the dialout group with\n"
+                   "    sudo usermod -aG dialout $USER\n"
+                   "then log out and in again (the group applies to new sessions only).");
+#endif
+    if (err == EINVAL && settings().parity != 'N')
         text += QCoreApplication::translate(
             "opentop::Transport", " (the device may not support this parity; ptys need N)");
     return text;
@@ -208,7 +220,11 @@ namespace opentop {
 
 std::unique_ptr<SerialDriver> RtuBackend::makeDriver()
 {
+#ifdef Q_OS_WIN
+    return std::make_unique<ComPortDriver>(modbusContext().commHandle());
+#else
     return std::make_unique<IoctlSerialDriver>(descriptor(), context());
+#endif
 }
 
 bool RtuBackend::applyLineFormat(const LineFormat& format, QString* error)

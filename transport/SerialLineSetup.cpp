@@ -6,11 +6,29 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <cerrno>
+#ifdef Q_OS_WIN
+#include "transport/WinError_win.h"
+
+#include <cstring>
+#else
 #include <linux/serial.h>
+#endif
 
 namespace opentop {
 
 namespace {
+
+#ifdef Q_OS_WIN
+// linux/serial.h's flags, which SerialDriver::Rs485 carries; no Windows driver takes them
+// (ComPortDriver answers ENOTSUP).
+enum : quint32
+{
+    SER_RS485_ENABLED = 1u << 0,
+    SER_RS485_RTS_ON_SEND = 1u << 1,
+    SER_RS485_RTS_AFTER_SEND = 1u << 2,
+    SER_RS485_RX_DURING_TX = 1u << 4,
+};
+#endif
 
 using Rs485 = ConnectionSettings::Rs485;
 using Direction = SerialLineReport::Direction;
@@ -18,7 +36,13 @@ using LowLatency = SerialLineReport::LowLatency;
 
 QString errorText(int err)
 {
+#ifdef Q_OS_WIN // qt_error_string takes a Windows error code there, not an errno
+    if (const char* text = WinError::posixText(err))
+        return QString::fromLatin1(text);
+    return QString::fromLocal8Bit(std::strerror(err));
+#else
     return qt_error_string(err);
+#endif
 }
 
 bool highWhileSending(const SerialDriver::Rs485& state)

@@ -7,9 +7,14 @@
 #include <QHostAddress>
 #include <QHostInfo>
 #include <algorithm>
-#include <arpa/inet.h>
 #include <cerrno>
 #include <modbus.h>
+#ifdef Q_OS_WIN
+#include <winsock2.h>
+#include <ws2tcpip.h>
+#else
+#include <arpa/inet.h>
+#endif
 
 namespace opentop {
 

@@ -2,6 +2,7 @@
 
 #include "model/access/StationAccess.h"
 #include "model/io/DisplayText.h"
+#include "model/io/SystemUser.h"
 #include "model/station/EolStation.h"
 
 #include <QHBoxLayout>
@@ -9,18 +10,10 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QStackedWidget>
-#include <pwd.h>
-#include <unistd.h>
 
 namespace opentop {
 
 namespace {
-
-QString loginName()
-{
-    const passwd* user = ::getpwuid(::geteuid());
-    return user ? QString::fromLocal8Bit(user->pw_name) : QString();
-}
 
 QWidget* row(QWidget* parent, std::initializer_list<QWidget*> widgets)
 {
@@ -41,7 +34,7 @@ StationLogin::StationLogin(EolStation* station, QWidget* parent)
 {
     m_pages = new QStackedWidget(this);
     // Unmanaged: the operator's name as free text, as before users existed.
-    m_operator = new QLineEdit(loginName(), this);
+    m_operator = new QLineEdit(SystemUser::loginName(), this);
     m_operator->setPlaceholderText(tr("operator"));
     m_operator->setMaximumWidth(180);
     m_pages->addWidget(row(this, {new QLabel(tr("Operator:"), this), m_operator}));
