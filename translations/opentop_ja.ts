@@ -3022,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="97"/>
-        <location filename="../cli/CliContext.cpp" line="111"/>
-        <location filename="../cli/CliContext.cpp" line="119"/>
+        <location filename="../cli/CliContext.cpp" line="127"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="149"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="154"/>
         <source>serial line: %1</source>
         <translation>シリアル回線: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="147"/>
+        <location filename="../cli/CliContext.cpp" line="177"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="259"/>
+        <location filename="../cli/CliContext.cpp" line="289"/>
         <source>machine number %1: no connection</source>
         <translation>局番 %1: 接続なし</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="264"/>
+        <location filename="../cli/CliContext.cpp" line="294"/>
         <source>machine number %1: %2%3</source>
         <translation>局番 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="322"/>
+        <location filename="../cli/CliContext.cpp" line="352"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot; は局番 1–247 ではありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="356"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot; はドライバの機種ではありません。%3 のいずれかを指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="344"/>
+        <location filename="../cli/CliContext.cpp" line="374"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; は局番 1–247 でも 3-8 のような範囲でもありません</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="354"/>
+        <location filename="../cli/CliContext.cpp" line="384"/>
         <source>no machine number given</source>
         <translation>局番が指定されていません</translation>
     </message>
@@ -3072,37 +3072,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliIdentity</name>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
         <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
         <translation>実行する人 (結果データベースのユーザー)。パスワードは OPENTOP_PASSWORD から取るか、端末で尋ねます。</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <location filename="../cli/CliIdentity.cpp" line="75"/>
         <source>NAME</source>
         <translation>名前</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <location filename="../cli/CliIdentity.cpp" line="86"/>
         <source>error: no password: set %1 or run on a terminal</source>
         <translation>エラー: パスワードがありません: %1 を設定するか端末で実行してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <location filename="../cli/CliIdentity.cpp" line="91"/>
         <source>Again: </source>
         <translation>もう一度: </translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <location filename="../cli/CliIdentity.cpp" line="93"/>
         <source>error: the passwords differ; nothing was changed</source>
         <translation>エラー: パスワードが一致しません。何も変更していません</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <location filename="../cli/CliIdentity.cpp" line="104"/>
         <source>error: name who does it with --user NAME</source>
         <translation>エラー: --user NAME で実行する人を指定してください</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <location filename="../cli/CliIdentity.cpp" line="108"/>
         <source>Password for %1: </source>
         <translation>%1 のパスワード: </translation>
     </message>
@@ -6257,158 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="60"/>
+        <location filename="../cli/EolRunCommand.cpp" line="59"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>出荷検査で製品を 1 台設定・試験し、結果を記録します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>製品のシリアル番号（バーコードの読取り値）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>ユーザーのいないステーションで検査する人 (既定: ログイン名)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>このステーションの名前（既定: ホスト名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果データベース: SQLite ファイルまたは postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>個別値の CSV ファイル（シリアル番号別）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="73"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>作業者が入力する個別値。例: 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="76"/>
+        <location filename="../cli/EolRunCommand.cpp" line="75"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>レシピの規則で止められる再試験（合格済みのシリアル、または試験回数を使い切ったもの）を技術者が許可します。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="109"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE の形式で指定してください。例: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="115"/>
+        <location filename="../cli/EolRunCommand.cpp" line="114"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="137"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2 が許可するのは %3。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="140"/>
+        <location filename="../cli/EolRunCommand.cpp" line="139"/>
         <source>any %1 variant</source>
         <translation>%1 の全機種</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: レシピに局番 %2 の位置がない。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="163"/>
+        <location filename="../cli/EolRunCommand.cpp" line="162"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>使い方: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="179"/>
+        <location filename="../cli/EolRunCommand.cpp" line="178"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: レシピが無効です。何も送信していません:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <location filename="../cli/EolRunCommand.cpp" line="188"/>
         <source>--serial: %1; nothing was sent</source>
         <translation>--serial: %1。何も送信していない</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="218"/>
+        <location filename="../cli/EolRunCommand.cpp" line="217"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果データベース: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="224"/>
+        <location filename="../cli/EolRunCommand.cpp" line="223"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意: ユニット %1（%2 開始）はステーションのプロセスが終了したため完了せず、「中断」として記録されました。モーターが停止していることを確認してください。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="228"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意: このステーションに保管された結果 %1 件を、まだ結果データベースへ送れていません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="320"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>error: %1; nothing was sent</source>
         <translation>エラー: %1。何も送信していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="323"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>a technician allows it with --retest</source>
         <translation>技術者は --retest で許可できます</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="272"/>
+        <location filename="../cli/EolRunCommand.cpp" line="269"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注: %1。--retest の許可により再試験します</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="276"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>note: %1</source>
         <translation>注: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="283"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>station: %1</source>
         <translation>ステーション: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="329"/>
+        <location filename="../cli/EolRunCommand.cpp" line="326"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>ステーションのドライブに停止を確認できないものがあります。何も検査していません</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="301"/>
+        <location filename="../cli/EolRunCommand.cpp" line="298"/>
         <source>interrupted at the station</source>
         <translation>ステーションで中断</translation>
     </message>
@@ -10885,6 +10885,11 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <source>the port is plugged in: %1</source>
         <translation>ポートを接続しました: %1</translation>
     </message>
+    <message>
+        <location filename="../sim/PtySimServer_win.cpp" line="29"/>
+        <source>a simulated serial line needs a pseudo-terminal, which Windows does not have: serve Modbus TCP with --tcp PORT (e.g. --tcp 5020) and connect with --tcp 127.0.0.1:5020</source>
+        <translation>模擬シリアル回線には疑似端末が必要ですが、Windows にはありません: --tcp PORT（例: --tcp 5020）で Modbus TCP を提供し、--tcp 127.0.0.1:5020 で接続してください</translation>
+    </message>
 </context>
 <context>
     <name>opentop::ReachedDrives</name>
@@ -14553,37 +14558,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="111"/>
+        <location filename="../sim/SimApp.cpp" line="77"/>
         <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
         <translation>opentop-sim: %1@%2 は %3（自身の回線設定）で通信します。その形式で送られたフレームにのみ応答します</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="117"/>
+        <location filename="../sim/SimApp.cpp" line="83"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 警告: %1@%2 は %3 %4 を使用できないため応答しません</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="97"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: バス %3 に局番 %1 のドライバはありません</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="138"/>
+        <location filename="../sim/SimApp.cpp" line="104"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="177"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>the port is unplugged already</source>
         <translation>ポートはすでに切断されています</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="179"/>
+        <location filename="../sim/SimApp.cpp" line="140"/>
         <source>unplugged</source>
         <translation>切断しました</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="212"/>
+        <location filename="../sim/SimApp.cpp" line="167"/>
         <source>error: %1</source>
         <translation>エラー: %1</translation>
     </message>
@@ -15552,52 +15557,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="38"/>
         <source>operator</source>
         <translation>作業者</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="40"/>
         <source>Operator:</source>
         <translation>作業者:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
         <source>user name</source>
         <translation>ユーザー名</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="49"/>
         <source>password</source>
         <translation>パスワード</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>Log in</source>
         <translation>ログイン</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="52"/>
         <source>Log in:</source>
         <translation>ログイン:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
         <source>Log out</source>
         <translation>ログアウト</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="104"/>
         <source>Not logged in: %1</source>
         <translation>ログインできません: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="125"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>ログイン中: &lt;b&gt;%1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>ユーザーが設定されていません: 誰でも実行・編集・終了できます。opentop-cli eol user add でユーザーを設定してください</translation>
     </message>
@@ -16639,7 +16644,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="373"/>
         <source>%1 is not open</source>
         <translation>%1 が開いていません</translation>
     </message>
@@ -16686,22 +16691,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>局番 %1 からの応答（期待値 %2）</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="178"/>
-        <location filename="../transport/TcpBackend.cpp" line="107"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="140"/>
+        <location filename="../transport/RtuBackend.cpp" line="191"/>
+        <location filename="../transport/TcpBackend.cpp" line="112"/>
         <source>reply incomplete</source>
         <translation>応答が不完全です</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="144"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
-        <location filename="../transport/RtuBackend.cpp" line="185"/>
-        <location filename="../transport/TcpBackend.cpp" line="113"/>
+        <location filename="../transport/RtuBackend.cpp" line="198"/>
+        <location filename="../transport/TcpBackend.cpp" line="118"/>
         <source>receive failed</source>
         <translation>受信失敗</translation>
     </message>
@@ -16746,18 +16751,18 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>エコー %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="239"/>
         <source>cancelled before sending</source>
         <translation>送信前にキャンセルしました</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>cannot open %1</source>
         <translation>%1 を開けません</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="327"/>
         <source>client closed</source>
         <translation>クライアントが切断しました</translation>
     </message>
@@ -16987,22 +16992,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation> (%1 回試行)</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="22"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>%1 は他のプログラムが使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="27"/>
         <source>another program</source>
         <translation>他のプログラム</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="29"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%1 は %2 (PID %3) が使用中です。先に終了してください。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="115"/>
+        <location filename="../transport/RtuBackend.cpp" line="127"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -17011,17 +17016,17 @@ then log out and in again (the group applies to new sessions only).</source>
 ログアウトして再ログインしてください（グループは新しいセッションにのみ適用されます）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="121"/>
+        <location filename="../transport/RtuBackend.cpp" line="134"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (デバイスがこのパリティに対応していない可能性があります。pty は N が必要です)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="156"/>
+        <location filename="../transport/RtuBackend.cpp" line="169"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>応答が %1 バイトを示していますが、RTU フレームの最大長を超えています</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="177"/>
+        <location filename="../transport/RtuBackend.cpp" line="190"/>
         <source>no reply</source>
         <translation>応答なし</translation>
     </message>
@@ -17071,17 +17076,22 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>エコー %1 ×%2 が書込み内容と異なります</translation>
     </message>
     <message>
-        <location filename="../transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="87"/>
+        <source>An adapter missing here has no driver: see Device Manager, Ports (COM &amp; LPT). A port can also be typed, e.g. COM12.</source>
+        <translation>ここに表示されないアダプターにはドライバーがありません: デバイス マネージャーの「ポート (COM と LPT)」を確認してください。ポート名を直接入力することもできます（例: COM12）。</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialPortList.cpp" line="92"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>疑似端末（例: /dev/pts/3 や socat のリンク）は一覧に表示されません: パスを入力してください。</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="56"/>
+        <location filename="../transport/TcpBackend.cpp" line="61"/>
         <source>Cannot open %1: the name %2 was not found (%3); check the gateway&apos;s name, or give its address</source>
         <translation>%1 を開けません: 名前 %2 が見つかりません（%3）。ゲートウェイの名前を確認するか、アドレスを指定してください</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="123"/>
+        <location filename="../transport/TcpBackend.cpp" line="128"/>
         <source>MBAP length %1</source>
         <translation>MBAP 長 %1</translation>
     </message>
@@ -17197,66 +17207,71 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: the driver&apos;s setting (FTDI: Latency Timer 1 ms in Device Manager)</source>
+        <translation>低遅延: ドライバーの設定（FTDI: デバイス マネージャーで Latency Timer を 1 ms に）</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="100"/>
         <source>low latency: not offered by the driver (%1)</source>
         <translation>低レイテンシ: シリアルドライバが非対応（%1）</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <location filename="../transport/SerialLineReport.cpp" line="104"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
         <translation>低レイテンシ: シリアルドライバが非対応（USB アダプタ: 最大 %1 ms と想定）</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: not offered by the driver</source>
         <translation>低レイテンシ: シリアルドライバが非対応</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <location filename="../transport/SerialLineReport.cpp" line="112"/>
         <source>low latency: off</source>
         <translation>低レイテンシ: オフ</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <location filename="../transport/SerialLineReport.cpp" line="113"/>
         <source>low latency: off (%1)</source>
         <translation>低レイテンシ: オフ（%1）</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>low latency is off</source>
         <translation>低レイテンシがオフ</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <location filename="../transport/SerialLineReport.cpp" line="139"/>
         <source>the driver took low latency but kept its latency timer</source>
         <translation>シリアルドライバは低レイテンシを受け付けたが、レイテンシタイマはそのまま</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <location filename="../transport/SerialLineReport.cpp" line="142"/>
         <source>the driver did not take low latency</source>
         <translation>シリアルドライバが低レイテンシを受け付けなかった</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <location filename="../transport/SerialLineReport.cpp" line="145"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
         <translation>docs/hardware.md を参照するか、シリアルドライバが低レイテンシに対応したアダプタを使用してください</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <location filename="../transport/SerialLineReport.cpp" line="149"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
         <translation>root で実行: echo 1 &gt; %1、または docs/hardware.md の udev ルールを使用</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <location filename="../transport/SerialLineReport.cpp" line="153"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
         <translation>アダプタは受信したバイトを最大 %1 ms 保持してから渡します（%2）。対処: %3。</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="131"/>
         <source>the driver left it off</source>
         <translation>シリアルドライバがオフのままにした</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="200"/>
         <source>the port does not take %1</source>
         <translation>ポートが %1 を受け付けません</translation>
     </message>

@@ -3022,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="97"/>
-        <location filename="../cli/CliContext.cpp" line="111"/>
-        <location filename="../cli/CliContext.cpp" line="119"/>
+        <location filename="../cli/CliContext.cpp" line="127"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="149"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="154"/>
         <source>serial line: %1</source>
         <translation>시리얼 라인: %1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="147"/>
+        <location filename="../cli/CliContext.cpp" line="177"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="259"/>
+        <location filename="../cli/CliContext.cpp" line="289"/>
         <source>machine number %1: no connection</source>
         <translation>국번 %1: 연결 없음</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="264"/>
+        <location filename="../cli/CliContext.cpp" line="294"/>
         <source>machine number %1: %2%3</source>
         <translation>국번 %1: %2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="322"/>
+        <location filename="../cli/CliContext.cpp" line="352"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 국번 1–247이 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="356"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1: &quot;%2&quot;은(는) 드라이버 기종이 아닙니다. 다음 중 하나를 사용하십시오: %3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="344"/>
+        <location filename="../cli/CliContext.cpp" line="374"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot;은(는) 국번 1–247 또는 3-8 같은 범위가 아닙니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="354"/>
+        <location filename="../cli/CliContext.cpp" line="384"/>
         <source>no machine number given</source>
         <translation>국번이 지정되지 않았습니다</translation>
     </message>
@@ -3072,37 +3072,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliIdentity</name>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
         <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
         <translation>수행하는 사람(결과 데이터베이스의 사용자). 비밀번호는 OPENTOP_PASSWORD에서 가져오거나 터미널에서 묻습니다.</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <location filename="../cli/CliIdentity.cpp" line="75"/>
         <source>NAME</source>
         <translation>이름</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <location filename="../cli/CliIdentity.cpp" line="86"/>
         <source>error: no password: set %1 or run on a terminal</source>
         <translation>오류: 비밀번호가 없습니다: %1을(를) 설정하거나 터미널에서 실행하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <location filename="../cli/CliIdentity.cpp" line="91"/>
         <source>Again: </source>
         <translation>다시 입력: </translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <location filename="../cli/CliIdentity.cpp" line="93"/>
         <source>error: the passwords differ; nothing was changed</source>
         <translation>오류: 비밀번호가 서로 다릅니다. 아무것도 변경하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <location filename="../cli/CliIdentity.cpp" line="104"/>
         <source>error: name who does it with --user NAME</source>
         <translation>오류: --user NAME으로 수행하는 사람을 지정하십시오</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <location filename="../cli/CliIdentity.cpp" line="108"/>
         <source>Password for %1: </source>
         <translation>%1의 비밀번호: </translation>
     </message>
@@ -6257,158 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db).
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="60"/>
+        <location filename="../cli/EolRunCommand.cpp" line="59"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>라인 끝에서 제품 하나를 설정·검사하고 결과를 기록합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>제품의 시리얼 번호(바코드에 읽히는 그대로).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>사용자가 없는 스테이션에서 검사하는 사람(기본값: 로그인 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>이 스테이션의 이름(기본값: 호스트 이름).</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>결과 데이터베이스: SQLite 파일 또는 postgresql://user@host/db.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>시리얼 번호별 제품별 값이 들어 있는 CSV 파일.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="73"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>작업자가 입력하는 제품별 값, 예: 1:spno3.speed=1500.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="76"/>
+        <location filename="../cli/EolRunCommand.cpp" line="75"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>레시피 규칙으로 막힌 재검사(이미 합격한 시리얼, 또는 검사 횟수를 다 쓴 시리얼)를 기술자가 허가합니다.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="109"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1: MACHINE:NAME=VALUE 형식으로 쓰십시오. 예: 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="115"/>
+        <location filename="../cli/EolRunCommand.cpp" line="114"/>
         <source>--value %1: %2</source>
         <translation>--value %1: %2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="137"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1: %2은(는) %3을(를) 허용합니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="140"/>
+        <location filename="../cli/EolRunCommand.cpp" line="139"/>
         <source>any %1 variant</source>
         <translation>모든 %1 기종</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1: 레시피에 국번 %2의 위치가 없습니다. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="163"/>
+        <location filename="../cli/EolRunCommand.cpp" line="162"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>사용법: opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="179"/>
+        <location filename="../cli/EolRunCommand.cpp" line="178"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1: 레시피가 올바르지 않습니다. 아무것도 보내지 않았습니다:</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <location filename="../cli/EolRunCommand.cpp" line="188"/>
         <source>--serial: %1; nothing was sent</source>
         <translation>--serial: %1. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="218"/>
+        <location filename="../cli/EolRunCommand.cpp" line="217"/>
         <source>results database: %1; nothing was sent</source>
         <translation>결과 데이터베이스: %1; 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="224"/>
+        <location filename="../cli/EolRunCommand.cpp" line="223"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>참고: 유닛 %1(%2 시작)은 스테이션 프로세스가 종료되어 완료되지 않았으며, 이제 &apos;중단됨&apos;으로 기록되었습니다. 모터가 정지했는지 확인하십시오.</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="228"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>참고: 이 스테이션에 보관된 결과 %1건을 아직 결과 데이터베이스로 보내지 못했습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="320"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>error: %1; nothing was sent</source>
         <translation>오류: %1. 아무것도 보내지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="323"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>a technician allows it with --retest</source>
         <translation>기술자가 --retest로 허가할 수 있습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="272"/>
+        <location filename="../cli/EolRunCommand.cpp" line="269"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>참고: %1. --retest의 허가로 다시 검사합니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="276"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>note: %1</source>
         <translation>참고: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="283"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>station: %1</source>
         <translation>스테이션: %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="329"/>
+        <location filename="../cli/EolRunCommand.cpp" line="326"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>스테이션의 드라이브 중 정지가 확인되지 않은 것이 있습니다. 아무것도 검사하지 않았습니다</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="301"/>
+        <location filename="../cli/EolRunCommand.cpp" line="298"/>
         <source>interrupted at the station</source>
         <translation>스테이션에서 중단됨</translation>
     </message>
@@ -10885,6 +10885,11 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <source>the port is plugged in: %1</source>
         <translation>포트가 연결되었습니다: %1</translation>
     </message>
+    <message>
+        <location filename="../sim/PtySimServer_win.cpp" line="29"/>
+        <source>a simulated serial line needs a pseudo-terminal, which Windows does not have: serve Modbus TCP with --tcp PORT (e.g. --tcp 5020) and connect with --tcp 127.0.0.1:5020</source>
+        <translation>시뮬레이션 직렬 회선에는 가상 터미널이 필요하지만 Windows에는 없습니다: --tcp PORT(예: --tcp 5020)로 Modbus TCP를 제공하고 --tcp 127.0.0.1:5020으로 연결하십시오</translation>
+    </message>
 </context>
 <context>
     <name>opentop::ReachedDrives</name>
@@ -14553,37 +14558,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="111"/>
+        <location filename="../sim/SimApp.cpp" line="77"/>
         <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
         <translation>opentop-sim: %1@%2은(는) %3(자체 라인 설정)으로 통신합니다. 그 형식으로 보낸 프레임에만 응답합니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="117"/>
+        <location filename="../sim/SimApp.cpp" line="83"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim: 경고: %1@%2은(는) %3 %4을(를) 사용할 수 없으므로 응답하지 않습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="97"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim: --defect %1:%2: 버스 %3에 국번 %1인 드라이버가 없습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="138"/>
+        <location filename="../sim/SimApp.cpp" line="104"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim: --defect %1 (%2@%1): %3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="177"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>the port is unplugged already</source>
         <translation>포트가 이미 분리되어 있습니다</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="179"/>
+        <location filename="../sim/SimApp.cpp" line="140"/>
         <source>unplugged</source>
         <translation>분리됨</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="212"/>
+        <location filename="../sim/SimApp.cpp" line="167"/>
         <source>error: %1</source>
         <translation>오류: %1</translation>
     </message>
@@ -15552,52 +15557,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="38"/>
         <source>operator</source>
         <translation>작업자</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="40"/>
         <source>Operator:</source>
         <translation>작업자:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
         <source>user name</source>
         <translation>사용자 이름</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="49"/>
         <source>password</source>
         <translation>비밀번호</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>Log in</source>
         <translation>로그인</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="52"/>
         <source>Log in:</source>
         <translation>로그인:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
         <source>Log out</source>
         <translation>로그아웃</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="104"/>
         <source>Not logged in: %1</source>
         <translation>로그인하지 못했습니다: %1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="125"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>로그인: &lt;b&gt;%1&lt;/b&gt;(%2)</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>사용자가 설정되지 않았습니다: 누구나 실행, 편집, 종료할 수 있습니다. opentop-cli eol user add로 사용자를 설정하십시오</translation>
     </message>
@@ -16639,7 +16644,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="373"/>
         <source>%1 is not open</source>
         <translation>%1이(가) 열려 있지 않습니다</translation>
     </message>
@@ -16686,22 +16691,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>슬레이브 %1의 응답, 기대값 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="178"/>
-        <location filename="../transport/TcpBackend.cpp" line="107"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="140"/>
+        <location filename="../transport/RtuBackend.cpp" line="191"/>
+        <location filename="../transport/TcpBackend.cpp" line="112"/>
         <source>reply incomplete</source>
         <translation>응답 불완전</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="144"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 불일치</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
-        <location filename="../transport/RtuBackend.cpp" line="185"/>
-        <location filename="../transport/TcpBackend.cpp" line="113"/>
+        <location filename="../transport/RtuBackend.cpp" line="198"/>
+        <location filename="../transport/TcpBackend.cpp" line="118"/>
         <source>receive failed</source>
         <translation>수신 실패</translation>
     </message>
@@ -16746,18 +16751,18 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>에코 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="239"/>
         <source>cancelled before sending</source>
         <translation>송신 전 취소됨</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>cannot open %1</source>
         <translation>%1을(를) 열 수 없습니다</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="327"/>
         <source>client closed</source>
         <translation>클라이언트 닫힘</translation>
     </message>
@@ -16987,22 +16992,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation> (%1회 시도)</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="22"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>다른 프로그램이 %1을(를) 사용 중입니다. 먼저 그 프로그램을 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="27"/>
         <source>another program</source>
         <translation>다른 프로그램</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="29"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%2(PID %3)이(가) %1을(를) 사용 중입니다. 먼저 닫으십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="115"/>
+        <location filename="../transport/RtuBackend.cpp" line="127"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -17011,17 +17016,17 @@ then log out and in again (the group applies to new sessions only).</source>
 로그아웃했다가 다시 로그인하십시오(그룹은 새 세션에만 적용됨).</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="121"/>
+        <location filename="../transport/RtuBackend.cpp" line="134"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (장치가 이 패리티를 지원하지 않을 수 있습니다. pty는 N이 필요합니다)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="156"/>
+        <location filename="../transport/RtuBackend.cpp" line="169"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>응답이 %1바이트라고 알리지만 RTU 프레임에 들어갈 수 있는 크기보다 큽니다</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="177"/>
+        <location filename="../transport/RtuBackend.cpp" line="190"/>
         <source>no reply</source>
         <translation>응답 없음</translation>
     </message>
@@ -17071,17 +17076,22 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>에코 %1 ×%2이(가) 쓴 내용과 다름</translation>
     </message>
     <message>
-        <location filename="../transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="87"/>
+        <source>An adapter missing here has no driver: see Device Manager, Ports (COM &amp; LPT). A port can also be typed, e.g. COM12.</source>
+        <translation>여기에 없는 어댑터는 드라이버가 설치되지 않은 것입니다: 장치 관리자의 &apos;포트(COM &amp; LPT)&apos;를 확인하십시오. 포트를 직접 입력할 수도 있습니다(예: COM12).</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialPortList.cpp" line="92"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>가상 터미널(예: /dev/pts/3 또는 socat 링크)은 목록에 나오지 않습니다: 경로를 입력하십시오.</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="56"/>
+        <location filename="../transport/TcpBackend.cpp" line="61"/>
         <source>Cannot open %1: the name %2 was not found (%3); check the gateway&apos;s name, or give its address</source>
         <translation>%1을(를) 열 수 없습니다: 이름 %2을(를) 찾을 수 없습니다(%3). 게이트웨이 이름을 확인하거나 주소를 입력하십시오</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="123"/>
+        <location filename="../transport/TcpBackend.cpp" line="128"/>
         <source>MBAP length %1</source>
         <translation>MBAP 길이 %1</translation>
     </message>
@@ -17197,66 +17207,71 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: the driver&apos;s setting (FTDI: Latency Timer 1 ms in Device Manager)</source>
+        <translation>저지연: 드라이버 설정(FTDI: 장치 관리자에서 Latency Timer를 1 ms로)</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="100"/>
         <source>low latency: not offered by the driver (%1)</source>
         <translation>저지연: 시리얼 드라이버가 지원하지 않음 (%1)</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <location filename="../transport/SerialLineReport.cpp" line="104"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
         <translation>저지연: 시리얼 드라이버가 지원하지 않음 (USB 어댑터: 최대 %1 ms로 가정)</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: not offered by the driver</source>
         <translation>저지연: 시리얼 드라이버가 지원하지 않음</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <location filename="../transport/SerialLineReport.cpp" line="112"/>
         <source>low latency: off</source>
         <translation>저지연: 꺼짐</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <location filename="../transport/SerialLineReport.cpp" line="113"/>
         <source>low latency: off (%1)</source>
         <translation>저지연: 꺼짐 (%1)</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>low latency is off</source>
         <translation>저지연이 꺼져 있음</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <location filename="../transport/SerialLineReport.cpp" line="139"/>
         <source>the driver took low latency but kept its latency timer</source>
         <translation>시리얼 드라이버가 저지연을 받아들였지만 지연 타이머는 그대로임</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <location filename="../transport/SerialLineReport.cpp" line="142"/>
         <source>the driver did not take low latency</source>
         <translation>시리얼 드라이버가 저지연을 받아들이지 않음</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <location filename="../transport/SerialLineReport.cpp" line="145"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
         <translation>docs/hardware.md를 참조하거나, 시리얼 드라이버가 저지연을 지원하는 어댑터를 사용하십시오</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <location filename="../transport/SerialLineReport.cpp" line="149"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
         <translation>root로 실행: echo 1 &gt; %1, 또는 docs/hardware.md의 udev 규칙 사용</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <location filename="../transport/SerialLineReport.cpp" line="153"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
         <translation>어댑터가 수신한 바이트를 최대 %1 ms 동안 보류한 뒤 넘깁니다(%2). 해결 방법: %3.</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="131"/>
         <source>the driver left it off</source>
         <translation>시리얼 드라이버가 꺼진 상태로 둠</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="200"/>
         <source>the port does not take %1</source>
         <translation>포트가 %1을(를) 받아들이지 않습니다</translation>
     </message>

@@ -3022,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="97"/>
-        <location filename="../cli/CliContext.cpp" line="111"/>
-        <location filename="../cli/CliContext.cpp" line="119"/>
+        <location filename="../cli/CliContext.cpp" line="127"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="149"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="154"/>
         <source>serial line: %1</source>
         <translation>串行线路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="147"/>
+        <location filename="../cli/CliContext.cpp" line="177"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="259"/>
+        <location filename="../cli/CliContext.cpp" line="289"/>
         <source>machine number %1: no connection</source>
         <translation>站号 %1：无连接</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="264"/>
+        <location filename="../cli/CliContext.cpp" line="294"/>
         <source>machine number %1: %2%3</source>
         <translation>站号 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="322"/>
+        <location filename="../cli/CliContext.cpp" line="352"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是站号 1–247</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="356"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驱动器机型；请使用 %3 之一</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="344"/>
+        <location filename="../cli/CliContext.cpp" line="374"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是站号 1–247，也不是 3-8 这样的范围</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="354"/>
+        <location filename="../cli/CliContext.cpp" line="384"/>
         <source>no machine number given</source>
         <translation>未指定站号</translation>
     </message>
@@ -3072,37 +3072,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliIdentity</name>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
         <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
         <translation>执行者（结果数据库的用户）；密码取自 OPENTOP_PASSWORD，否则在终端上询问。</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <location filename="../cli/CliIdentity.cpp" line="75"/>
         <source>NAME</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <location filename="../cli/CliIdentity.cpp" line="86"/>
         <source>error: no password: set %1 or run on a terminal</source>
         <translation>错误：没有密码：请设置 %1 或在终端上运行</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <location filename="../cli/CliIdentity.cpp" line="91"/>
         <source>Again: </source>
         <translation>再输入一次：</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <location filename="../cli/CliIdentity.cpp" line="93"/>
         <source>error: the passwords differ; nothing was changed</source>
         <translation>错误：两次密码不同；未做任何更改</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <location filename="../cli/CliIdentity.cpp" line="104"/>
         <source>error: name who does it with --user NAME</source>
         <translation>错误：请用 --user NAME 指定执行者</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <location filename="../cli/CliIdentity.cpp" line="108"/>
         <source>Password for %1: </source>
         <translation>%1 的密码：</translation>
     </message>
@@ -6257,158 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db（~/.local/share/opentop/results.db）。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="60"/>
+        <location filename="../cli/EolRunCommand.cpp" line="59"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>在下线工位设定并测试一台产品；记录结果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>产品序列号（按条码读取）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>无用户的工位上的测试者（默认：登录名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>本工位名称（默认：主机名）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>结果数据库：SQLite 文件或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含单台数值的 CSV 文件，按序列号对应。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="73"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由操作员输入的单台数值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="76"/>
+        <location filename="../cli/EolRunCommand.cpp" line="75"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技术员许可配方规则不允许的重新测试（已合格的序列号，或测试次数已用完）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="109"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：请写成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="115"/>
+        <location filename="../cli/EolRunCommand.cpp" line="114"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="137"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允许 %3；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="140"/>
+        <location filename="../cli/EolRunCommand.cpp" line="139"/>
         <source>any %1 variant</source>
         <translation>任何 %1 机型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在站号 %2 没有位置；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="163"/>
+        <location filename="../cli/EolRunCommand.cpp" line="162"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="179"/>
+        <location filename="../cli/EolRunCommand.cpp" line="178"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方无效；未发送任何内容：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <location filename="../cli/EolRunCommand.cpp" line="188"/>
         <source>--serial: %1; nothing was sent</source>
         <translation>--serial：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="218"/>
+        <location filename="../cli/EolRunCommand.cpp" line="217"/>
         <source>results database: %1; nothing was sent</source>
         <translation>结果数据库：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="224"/>
+        <location filename="../cli/EolRunCommand.cpp" line="223"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：单元 %1（开始于 %2）因工作站进程已结束而未完成，现已记录为“中断”。请确认其电机已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="228"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 条结果尚未能发送到结果数据库</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="320"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>error: %1; nothing was sent</source>
         <translation>错误：%1；未发送任何内容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="323"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>a technician allows it with --retest</source>
         <translation>技术员可用 --retest 许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="272"/>
+        <location filename="../cli/EolRunCommand.cpp" line="269"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；按 --retest 的许可重新测试</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="276"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="283"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="329"/>
+        <location filename="../cli/EolRunCommand.cpp" line="326"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驱动器未确认停止；未进行任何检测</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="301"/>
+        <location filename="../cli/EolRunCommand.cpp" line="298"/>
         <source>interrupted at the station</source>
         <translation>在工位上中断</translation>
     </message>
@@ -10885,6 +10885,11 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <source>the port is plugged in: %1</source>
         <translation>端口已插入：%1</translation>
     </message>
+    <message>
+        <location filename="../sim/PtySimServer_win.cpp" line="29"/>
+        <source>a simulated serial line needs a pseudo-terminal, which Windows does not have: serve Modbus TCP with --tcp PORT (e.g. --tcp 5020) and connect with --tcp 127.0.0.1:5020</source>
+        <translation>模拟的串行线路需要伪终端，而 Windows 没有：请用 --tcp PORT（例如 --tcp 5020）提供 Modbus TCP，并用 --tcp 127.0.0.1:5020 连接</translation>
+    </message>
 </context>
 <context>
     <name>opentop::ReachedDrives</name>
@@ -14553,37 +14558,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="111"/>
+        <location filename="../sim/SimApp.cpp" line="77"/>
         <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
         <translation>opentop-sim：%1@%2 使用 %3（它自己的线路设定）：只应答以该格式发送的帧</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="117"/>
+        <location filename="../sim/SimApp.cpp" line="83"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 无法使用 %3 %4，将不会应答</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="97"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：总线 %3 上没有站号为 %1 的驱动器</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="138"/>
+        <location filename="../sim/SimApp.cpp" line="104"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1（%2@%1）：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="177"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>the port is unplugged already</source>
         <translation>端口已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="179"/>
+        <location filename="../sim/SimApp.cpp" line="140"/>
         <source>unplugged</source>
         <translation>已拔出</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="212"/>
+        <location filename="../sim/SimApp.cpp" line="167"/>
         <source>error: %1</source>
         <translation>错误：%1</translation>
     </message>
@@ -15552,52 +15557,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="38"/>
         <source>operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="40"/>
         <source>Operator:</source>
         <translation>操作员:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
         <source>user name</source>
         <translation>用户名</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="49"/>
         <source>password</source>
         <translation>密码</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>Log in</source>
         <translation>登录</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="52"/>
         <source>Log in:</source>
         <translation>登录:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
         <source>Log out</source>
         <translation>注销</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="104"/>
         <source>Not logged in: %1</source>
         <translation>未登录：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="125"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>已登录：&lt;b&gt;%1&lt;/b&gt;（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>尚未设置用户：任何人都可运行、编辑和退出；请用 opentop-cli eol user add 设置用户</translation>
     </message>
@@ -16639,7 +16644,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="373"/>
         <source>%1 is not open</source>
         <translation>%1 未打开</translation>
     </message>
@@ -16686,22 +16691,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>来自从站 %1 的应答，预期为 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="178"/>
-        <location filename="../transport/TcpBackend.cpp" line="107"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="140"/>
+        <location filename="../transport/RtuBackend.cpp" line="191"/>
+        <location filename="../transport/TcpBackend.cpp" line="112"/>
         <source>reply incomplete</source>
         <translation>应答不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="144"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不一致</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
-        <location filename="../transport/RtuBackend.cpp" line="185"/>
-        <location filename="../transport/TcpBackend.cpp" line="113"/>
+        <location filename="../transport/RtuBackend.cpp" line="198"/>
+        <location filename="../transport/TcpBackend.cpp" line="118"/>
         <source>receive failed</source>
         <translation>接收失败</translation>
     </message>
@@ -16746,18 +16751,18 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>回显 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="239"/>
         <source>cancelled before sending</source>
         <translation>发送前已取消</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>cannot open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="327"/>
         <source>client closed</source>
         <translation>客户端已关闭</translation>
     </message>
@@ -16987,22 +16992,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation> （%1 次尝试）</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="22"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>%1 正被其他程序占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="27"/>
         <source>another program</source>
         <translation>其他程序</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="29"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%1 正被 %2（PID %3）占用；请先将其关闭。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="115"/>
+        <location filename="../transport/RtuBackend.cpp" line="127"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -17011,17 +17016,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然后注销并重新登录（该组仅对新会话生效）。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="121"/>
+        <location filename="../transport/RtuBackend.cpp" line="134"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> （设备可能不支持该校验位；pty 需要 N）</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="156"/>
+        <location filename="../transport/RtuBackend.cpp" line="169"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>应答声明 %1 字节，超过 RTU 帧的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="177"/>
+        <location filename="../transport/RtuBackend.cpp" line="190"/>
         <source>no reply</source>
         <translation>无应答</translation>
     </message>
@@ -17071,17 +17076,22 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>回显 %1 ×%2 与写入不一致</translation>
     </message>
     <message>
-        <location filename="../transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="87"/>
+        <source>An adapter missing here has no driver: see Device Manager, Ports (COM &amp; LPT). A port can also be typed, e.g. COM12.</source>
+        <translation>此处未列出的适配器尚未安装驱动程序：请查看设备管理器的“端口 (COM 和 LPT)”。也可以直接输入端口，例如 COM12。</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialPortList.cpp" line="92"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>伪终端（例如 /dev/pts/3 或 socat 链接）不会列出：请输入其路径。</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="56"/>
+        <location filename="../transport/TcpBackend.cpp" line="61"/>
         <source>Cannot open %1: the name %2 was not found (%3); check the gateway&apos;s name, or give its address</source>
         <translation>无法打开 %1：找不到名称 %2（%3）；请检查网关的名称，或改用其地址</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="123"/>
+        <location filename="../transport/TcpBackend.cpp" line="128"/>
         <source>MBAP length %1</source>
         <translation>MBAP 长度 %1</translation>
     </message>
@@ -17197,66 +17207,71 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: the driver&apos;s setting (FTDI: Latency Timer 1 ms in Device Manager)</source>
+        <translation>低延迟：由驱动程序设置（FTDI：在设备管理器中将 Latency Timer 设为 1 ms）</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="100"/>
         <source>low latency: not offered by the driver (%1)</source>
         <translation>低延迟：驱动程序不支持（%1）</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <location filename="../transport/SerialLineReport.cpp" line="104"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
         <translation>低延迟：驱动程序不支持（USB 适配器：按最多 %1 ms 估计）</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: not offered by the driver</source>
         <translation>低延迟：驱动程序不支持</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <location filename="../transport/SerialLineReport.cpp" line="112"/>
         <source>low latency: off</source>
         <translation>低延迟：关闭</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <location filename="../transport/SerialLineReport.cpp" line="113"/>
         <source>low latency: off (%1)</source>
         <translation>低延迟：关闭（%1）</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>low latency is off</source>
         <translation>低延迟已关闭</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <location filename="../transport/SerialLineReport.cpp" line="139"/>
         <source>the driver took low latency but kept its latency timer</source>
         <translation>驱动程序接受了低延迟，但保留了其延迟定时器</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <location filename="../transport/SerialLineReport.cpp" line="142"/>
         <source>the driver did not take low latency</source>
         <translation>驱动程序未接受低延迟</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <location filename="../transport/SerialLineReport.cpp" line="145"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
         <translation>请参阅 docs/hardware.md，或改用驱动程序支持低延迟的适配器</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <location filename="../transport/SerialLineReport.cpp" line="149"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
         <translation>以 root 身份执行：echo 1 &gt; %1，或使用 docs/hardware.md 中的 udev 规则</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <location filename="../transport/SerialLineReport.cpp" line="153"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
         <translation>适配器会将收到的字节缓存最多 %1 ms 后才转交（%2）。解决方法：%3。</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="131"/>
         <source>the driver left it off</source>
         <translation>驱动程序仍保持关闭</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="200"/>
         <source>the port does not take %1</source>
         <translation>端口不接受 %1</translation>
     </message>

@@ -3022,49 +3022,49 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliContext</name>
     <message>
-        <location filename="../cli/CliContext.cpp" line="97"/>
-        <location filename="../cli/CliContext.cpp" line="111"/>
-        <location filename="../cli/CliContext.cpp" line="119"/>
+        <location filename="../cli/CliContext.cpp" line="127"/>
+        <location filename="../cli/CliContext.cpp" line="141"/>
+        <location filename="../cli/CliContext.cpp" line="149"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="124"/>
+        <location filename="../cli/CliContext.cpp" line="154"/>
         <source>serial line: %1</source>
         <translation>序列線路：%1</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="147"/>
+        <location filename="../cli/CliContext.cpp" line="177"/>
         <source>%1 &quot;%2&quot;: %3</source>
         <translation>%1 &quot;%2&quot;：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="259"/>
+        <location filename="../cli/CliContext.cpp" line="289"/>
         <source>machine number %1: no connection</source>
         <translation>機號 %1：未連線</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="264"/>
+        <location filename="../cli/CliContext.cpp" line="294"/>
         <source>machine number %1: %2%3</source>
         <translation>機號 %1：%2%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="322"/>
+        <location filename="../cli/CliContext.cpp" line="352"/>
         <source>--variant %1: &quot;%2&quot; is not a machine number 1–247</source>
         <translation>--variant %1：&quot;%2&quot; 不是 1–247 的機號</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="326"/>
+        <location filename="../cli/CliContext.cpp" line="356"/>
         <source>--variant %1: &quot;%2&quot; is not a drive variant; use one of %3</source>
         <translation>--variant %1：&quot;%2&quot; 不是驅動器機型；請使用下列其中之一：%3</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="344"/>
+        <location filename="../cli/CliContext.cpp" line="374"/>
         <source>&quot;%1&quot; is not a machine number 1–247 or a range such as 3-8</source>
         <translation>&quot;%1&quot; 不是 1–247 的機號，也不是 3-8 這樣的範圍</translation>
     </message>
     <message>
-        <location filename="../cli/CliContext.cpp" line="354"/>
+        <location filename="../cli/CliContext.cpp" line="384"/>
         <source>no machine number given</source>
         <translation>未指定機號</translation>
     </message>
@@ -3072,37 +3072,37 @@ Exit codes: 0 success, 1 communication failure, 2 usage, 3 invalid value or file
 <context>
     <name>opentop::CliIdentity</name>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="42"/>
+        <location filename="../cli/CliIdentity.cpp" line="73"/>
         <source>Who does it (a user of the results database); the password comes from OPENTOP_PASSWORD or is asked on the terminal.</source>
         <translation>執行者（結果資料庫的使用者）；密碼取自 OPENTOP_PASSWORD，否則在終端機上詢問。</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="44"/>
+        <location filename="../cli/CliIdentity.cpp" line="75"/>
         <source>NAME</source>
         <translation>名稱</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="55"/>
+        <location filename="../cli/CliIdentity.cpp" line="86"/>
         <source>error: no password: set %1 or run on a terminal</source>
         <translation>錯誤：沒有密碼：請設定 %1 或在終端機上執行</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="60"/>
+        <location filename="../cli/CliIdentity.cpp" line="91"/>
         <source>Again: </source>
         <translation>再輸入一次：</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="62"/>
+        <location filename="../cli/CliIdentity.cpp" line="93"/>
         <source>error: the passwords differ; nothing was changed</source>
         <translation>錯誤：兩次密碼不同；未做任何變更</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="73"/>
+        <location filename="../cli/CliIdentity.cpp" line="104"/>
         <source>error: name who does it with --user NAME</source>
         <translation>錯誤：請以 --user NAME 指定執行者</translation>
     </message>
     <message>
-        <location filename="../cli/CliIdentity.cpp" line="77"/>
+        <location filename="../cli/CliIdentity.cpp" line="108"/>
         <source>Password for %1: </source>
         <translation>%1 的密碼：</translation>
     </message>
@@ -6257,158 +6257,158 @@ $XDG_DATA_HOME/opentop/results.db (~/.local/share/opentop/results.db)。
 <context>
     <name>opentop::EolRunCommand</name>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="60"/>
+        <location filename="../cli/EolRunCommand.cpp" line="59"/>
         <source>Set up and test one unit at the end of the line; record the result</source>
         <translation>於終檢工站設定並測試一台產品，並記錄結果</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>The unit&apos;s serial number (as its barcode reads).</source>
         <translation>產品序號 (依條碼讀取值)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="66"/>
+        <location filename="../cli/EolRunCommand.cpp" line="65"/>
         <source>S</source>
         <translation>S</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="66"/>
         <source>Who tests it, on a station without users (default: the login name).</source>
         <translation>無使用者的工站上的測試者（預設：登入名稱）。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="68"/>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="67"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="70"/>
+        <location filename="../cli/EolRunCommand.cpp" line="69"/>
         <source>This station&apos;s name (default: the host name).</source>
         <translation>此工站名稱 (預設：主機名稱)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>Results database: an SQLite file or postgresql://user@host/db.</source>
         <translation>結果資料庫：SQLite 檔或 postgresql://user@host/db。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="71"/>
+        <location filename="../cli/EolRunCommand.cpp" line="70"/>
         <source>URL</source>
         <translation>URL</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV file with the per-unit values, by serial number.</source>
         <translation>含單台數值的 CSV 檔，依序號對應。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="72"/>
+        <location filename="../cli/EolRunCommand.cpp" line="71"/>
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="73"/>
+        <location filename="../cli/EolRunCommand.cpp" line="72"/>
         <source>A per-unit value typed by the operator, e.g. 1:spno3.speed=1500.</source>
         <translation>由作業員輸入的單台數值，例如 1:spno3.speed=1500。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="74"/>
+        <location filename="../cli/EolRunCommand.cpp" line="73"/>
         <source>ID:NAME=VALUE</source>
         <translation>ID:NAME=VALUE</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="76"/>
+        <location filename="../cli/EolRunCommand.cpp" line="75"/>
         <source>A technician allows a retest the recipe&apos;s rules hold back (a serial that passed already, or its attempts used up).</source>
         <translation>由技術員許可配方規則不允許的重新測試 (已合格的序號，或測試次數已用完)。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="110"/>
+        <location filename="../cli/EolRunCommand.cpp" line="109"/>
         <source>--value %1: write it as MACHINE:NAME=VALUE, e.g. 1:spno3.speed=1500</source>
         <translation>--value %1：請寫成 MACHINE:NAME=VALUE，例如 1:spno3.speed=1500</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="115"/>
+        <location filename="../cli/EolRunCommand.cpp" line="114"/>
         <source>--value %1: %2</source>
         <translation>--value %1：%2</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="138"/>
+        <location filename="../cli/EolRunCommand.cpp" line="137"/>
         <source>--variant %1: %2 allows %3; nothing was sent</source>
         <translation>--variant %1：%2 允許 %3；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="140"/>
+        <location filename="../cli/EolRunCommand.cpp" line="139"/>
         <source>any %1 variant</source>
         <translation>任何 %1 機型</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="149"/>
+        <location filename="../cli/EolRunCommand.cpp" line="148"/>
         <source>--variant %1: the recipe has no position at machine number %2; nothing was sent</source>
         <translation>--variant %1：配方在機號 %2 沒有位置；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="163"/>
+        <location filename="../cli/EolRunCommand.cpp" line="162"/>
         <source>usage: opentop-cli eol %1</source>
         <translation>用法：opentop-cli eol %1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="179"/>
+        <location filename="../cli/EolRunCommand.cpp" line="178"/>
         <source>%1: the recipe is not valid; nothing was sent:</source>
         <translation>%1：配方無效；未送出任何資料：</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="189"/>
+        <location filename="../cli/EolRunCommand.cpp" line="188"/>
         <source>--serial: %1; nothing was sent</source>
         <translation>--serial：%1；未送出任何內容</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="218"/>
+        <location filename="../cli/EolRunCommand.cpp" line="217"/>
         <source>results database: %1; nothing was sent</source>
         <translation>結果資料庫：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="224"/>
+        <location filename="../cli/EolRunCommand.cpp" line="223"/>
         <source>note: unit %1 (begun %2) was left unfinished by a station process that is gone; it is now recorded as interrupted. Check that its motor is stopped.</source>
         <translation>注意：單元 %1（開始於 %2）因工作站程序已結束而未完成，現已記錄為「中斷」。請確認其馬達已停止。</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="229"/>
+        <location filename="../cli/EolRunCommand.cpp" line="228"/>
         <source>note: %1 result(s) kept on this station could not be sent to the results database yet</source>
         <translation>注意：本工作站保存的 %1 筆結果尚未能送到結果資料庫</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="320"/>
+        <location filename="../cli/EolRunCommand.cpp" line="317"/>
         <source>error: %1; nothing was sent</source>
         <translation>錯誤：%1；未送出任何資料</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="323"/>
+        <location filename="../cli/EolRunCommand.cpp" line="320"/>
         <source>a technician allows it with --retest</source>
         <translation>技術員可使用 --retest 許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="272"/>
+        <location filename="../cli/EolRunCommand.cpp" line="269"/>
         <source>note: %1; tested again as --retest allows</source>
         <translation>注意：%1；依 --retest 的許可重新測試</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="276"/>
+        <location filename="../cli/EolRunCommand.cpp" line="273"/>
         <source>note: %1</source>
         <translation>注意：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="283"/>
+        <location filename="../cli/EolRunCommand.cpp" line="280"/>
         <source>station: %1</source>
         <translation>工作站：%1</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="329"/>
+        <location filename="../cli/EolRunCommand.cpp" line="326"/>
         <source>a drive of the station is not confirmed stopped; nothing was tested</source>
         <translation>工作站有驅動器未確認停止；未進行任何檢測</translation>
     </message>
     <message>
-        <location filename="../cli/EolRunCommand.cpp" line="301"/>
+        <location filename="../cli/EolRunCommand.cpp" line="298"/>
         <source>interrupted at the station</source>
         <translation>在工站上中斷</translation>
     </message>
@@ -10885,6 +10885,11 @@ Nothing is tested until it is recorded. The station tries again by itself (next 
         <source>the port is plugged in: %1</source>
         <translation>連接埠已接上：%1</translation>
     </message>
+    <message>
+        <location filename="../sim/PtySimServer_win.cpp" line="29"/>
+        <source>a simulated serial line needs a pseudo-terminal, which Windows does not have: serve Modbus TCP with --tcp PORT (e.g. --tcp 5020) and connect with --tcp 127.0.0.1:5020</source>
+        <translation>模擬的串列線路需要虛擬終端機，而 Windows 沒有：請以 --tcp PORT（例如 --tcp 5020）提供 Modbus TCP，並以 --tcp 127.0.0.1:5020 連線</translation>
+    </message>
 </context>
 <context>
     <name>opentop::ReachedDrives</name>
@@ -14553,37 +14558,37 @@ This moves or stops a motor: add --yes to send it.</source>
 <context>
     <name>opentop::SimApp</name>
     <message>
-        <location filename="../sim/SimApp.cpp" line="111"/>
+        <location filename="../sim/SimApp.cpp" line="77"/>
         <source>opentop-sim: %1@%2 talks %3 (its own line settings): it answers only frames sent in that format</source>
         <translation>opentop-sim：%1@%2 使用 %3（它自己的線路設定）：只回應以該格式送出的訊框</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="117"/>
+        <location filename="../sim/SimApp.cpp" line="83"/>
         <source>opentop-sim: warning: %1@%2 cannot use %3 %4 and will not answer</source>
         <translation>opentop-sim：警告：%1@%2 無法使用 %3 %4，將不會回應</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="131"/>
+        <location filename="../sim/SimApp.cpp" line="97"/>
         <source>opentop-sim: --defect %1:%2: no drive with machine number %1 on the bus %3</source>
         <translation>opentop-sim：--defect %1:%2：匯流排 %3 上沒有機號 %1 的驅動器</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="138"/>
+        <location filename="../sim/SimApp.cpp" line="104"/>
         <source>opentop-sim: --defect %1 (%2@%1): %3</source>
         <translation>opentop-sim：--defect %1 (%2@%1)：%3</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="177"/>
+        <location filename="../sim/SimApp.cpp" line="138"/>
         <source>the port is unplugged already</source>
         <translation>連接埠已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="179"/>
+        <location filename="../sim/SimApp.cpp" line="140"/>
         <source>unplugged</source>
         <translation>已拔除</translation>
     </message>
     <message>
-        <location filename="../sim/SimApp.cpp" line="212"/>
+        <location filename="../sim/SimApp.cpp" line="167"/>
         <source>error: %1</source>
         <translation>錯誤：%1</translation>
     </message>
@@ -15552,52 +15557,52 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
 <context>
     <name>opentop::StationLogin</name>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="45"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="38"/>
         <source>operator</source>
         <translation>作業員</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="47"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="40"/>
         <source>Operator:</source>
         <translation>作業員:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="44"/>
         <source>user name</source>
         <translation>使用者名稱</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="56"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="49"/>
         <source>password</source>
         <translation>密碼</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="58"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="51"/>
         <source>Log in</source>
         <translation>登入</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="59"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="52"/>
         <source>Log in:</source>
         <translation>登入:</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="64"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="57"/>
         <source>Log out</source>
         <translation>登出</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="111"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="104"/>
         <source>Not logged in: %1</source>
         <translation>未登入：%1</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="132"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="125"/>
         <source>Logged in: &lt;b&gt;%1&lt;/b&gt; (%2)</source>
         <translation>已登入：&lt;b&gt;%1&lt;/b&gt;（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/eol/StationLogin.cpp" line="138"/>
+        <location filename="../ui/eol/StationLogin.cpp" line="131"/>
         <source>No users set up: anyone can run, edit and leave; set up users with opentop-cli eol user add</source>
         <translation>尚未設定使用者：任何人都可執行、編輯和離開；請以 opentop-cli eol user add 設定使用者</translation>
     </message>
@@ -16639,7 +16644,7 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="115"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="358"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="373"/>
         <source>%1 is not open</source>
         <translation>%1 未開啟</translation>
     </message>
@@ -16686,22 +16691,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>回應來自從站 %1，預期為 %2</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="111"/>
-        <location filename="../transport/RtuBackend.cpp" line="178"/>
-        <location filename="../transport/TcpBackend.cpp" line="107"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="140"/>
+        <location filename="../transport/RtuBackend.cpp" line="191"/>
+        <location filename="../transport/TcpBackend.cpp" line="112"/>
         <source>reply incomplete</source>
         <translation>回應不完整</translation>
     </message>
     <message>
-        <location filename="../transport/LibmodbusContext.cpp" line="115"/>
+        <location filename="../transport/LibmodbusContext.cpp" line="144"/>
         <location filename="../transport/RtuFrame.cpp" line="133"/>
         <source>CRC mismatch</source>
         <translation>CRC 不符</translation>
     </message>
     <message>
         <location filename="../transport/LibmodbusBackend.cpp" line="344"/>
-        <location filename="../transport/RtuBackend.cpp" line="185"/>
-        <location filename="../transport/TcpBackend.cpp" line="113"/>
+        <location filename="../transport/RtuBackend.cpp" line="198"/>
+        <location filename="../transport/TcpBackend.cpp" line="118"/>
         <source>receive failed</source>
         <translation>接收失敗</translation>
     </message>
@@ -16746,18 +16751,18 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation>回傳 %1 ×%2</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="214"/>
-        <location filename="../transport/ModbusClientWorker.cpp" line="233"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="220"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="239"/>
         <source>cancelled before sending</source>
         <translation>傳送前已取消</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="273"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="285"/>
         <source>cannot open %1</source>
         <translation>無法開啟 %1</translation>
     </message>
     <message>
-        <location filename="../transport/ModbusClientWorker.cpp" line="315"/>
+        <location filename="../transport/ModbusClientWorker.cpp" line="327"/>
         <source>client closed</source>
         <translation>用戶端已關閉</translation>
     </message>
@@ -16987,22 +16992,22 @@ Test unit %2 again? It is recorded as allowed by %3.</source>
         <translation> (嘗試 %1 次)</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="162"/>
+        <location filename="../transport/PortLock.cpp" line="22"/>
         <source>%1 is in use by another program; close it first.</source>
         <translation>%1 正被其他程式使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="167"/>
+        <location filename="../transport/PortLock.cpp" line="27"/>
         <source>another program</source>
         <translation>其他程式</translation>
     </message>
     <message>
-        <location filename="../transport/PortLock.cpp" line="169"/>
+        <location filename="../transport/PortLock.cpp" line="29"/>
         <source>%1 is in use by %2 (PID %3); close it first.</source>
         <translation>%1 正被 %2 (PID %3) 使用；請先關閉該程式。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="115"/>
+        <location filename="../transport/RtuBackend.cpp" line="127"/>
         <source>: your user may not open serial ports. Add it to the dialout group with
     sudo usermod -aG dialout $USER
 then log out and in again (the group applies to new sessions only).</source>
@@ -17011,17 +17016,17 @@ then log out and in again (the group applies to new sessions only).</source>
 然後登出再重新登入 (群組設定僅對新的登入工作階段生效)。</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="121"/>
+        <location filename="../transport/RtuBackend.cpp" line="134"/>
         <source> (the device may not support this parity; ptys need N)</source>
         <translation> (裝置可能不支援此同位元；pty 需使用 N)</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="156"/>
+        <location filename="../transport/RtuBackend.cpp" line="169"/>
         <source>reply announces %1 bytes, more than an RTU frame holds</source>
         <translation>回應宣告 %1 位元組，超過 RTU 訊框的容量</translation>
     </message>
     <message>
-        <location filename="../transport/RtuBackend.cpp" line="177"/>
+        <location filename="../transport/RtuBackend.cpp" line="190"/>
         <source>no reply</source>
         <translation>無回應</translation>
     </message>
@@ -17071,17 +17076,22 @@ then log out and in again (the group applies to new sessions only).</source>
         <translation>回傳 %1 ×%2 與寫入內容不同</translation>
     </message>
     <message>
-        <location filename="../transport/SerialPortList.cpp" line="64"/>
+        <location filename="../transport/SerialPortList.cpp" line="87"/>
+        <source>An adapter missing here has no driver: see Device Manager, Ports (COM &amp; LPT). A port can also be typed, e.g. COM12.</source>
+        <translation>此處未列出的轉接器尚未安裝驅動程式：請查看裝置管理員的「連接埠 (COM 和 LPT)」。也可以直接輸入連接埠，例如 COM12。</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialPortList.cpp" line="92"/>
         <source>Pseudo-terminals (e.g. /dev/pts/3 or a socat link) are not listed: type their path.</source>
         <translation>虛擬終端機 (例如 /dev/pts/3 或 socat 連結) 不會列出：請直接輸入其路徑。</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="56"/>
+        <location filename="../transport/TcpBackend.cpp" line="61"/>
         <source>Cannot open %1: the name %2 was not found (%3); check the gateway&apos;s name, or give its address</source>
         <translation>無法開啟 %1：找不到名稱 %2 (%3)；請檢查閘道器的名稱，或改用其位址</translation>
     </message>
     <message>
-        <location filename="../transport/TcpBackend.cpp" line="123"/>
+        <location filename="../transport/TcpBackend.cpp" line="128"/>
         <source>MBAP length %1</source>
         <translation>MBAP 長度 %1</translation>
     </message>
@@ -17197,66 +17207,71 @@ then log out and in again (the group applies to new sessions only).</source>
     </message>
     <message>
         <location filename="../transport/SerialLineReport.cpp" line="95"/>
+        <source>low latency: the driver&apos;s setting (FTDI: Latency Timer 1 ms in Device Manager)</source>
+        <translation>低延遲：由驅動程式設定（FTDI：在裝置管理員將 Latency Timer 設為 1 ms）</translation>
+    </message>
+    <message>
+        <location filename="../transport/SerialLineReport.cpp" line="100"/>
         <source>low latency: not offered by the driver (%1)</source>
         <translation>低延遲：驅動程式不支援 (%1)</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="99"/>
+        <location filename="../transport/SerialLineReport.cpp" line="104"/>
         <source>low latency: not offered by the driver (USB adapter: up to %1 ms assumed)</source>
         <translation>低延遲：驅動程式不支援 (USB 轉接器：假設最多 %1 ms)</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="103"/>
+        <location filename="../transport/SerialLineReport.cpp" line="108"/>
         <source>low latency: not offered by the driver</source>
         <translation>低延遲：驅動程式不支援</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="107"/>
+        <location filename="../transport/SerialLineReport.cpp" line="112"/>
         <source>low latency: off</source>
         <translation>低延遲：關閉</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="108"/>
+        <location filename="../transport/SerialLineReport.cpp" line="113"/>
         <source>low latency: off (%1)</source>
         <translation>低延遲：關閉 (%1)</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="132"/>
+        <location filename="../transport/SerialLineReport.cpp" line="137"/>
         <source>low latency is off</source>
         <translation>低延遲已關閉</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="134"/>
+        <location filename="../transport/SerialLineReport.cpp" line="139"/>
         <source>the driver took low latency but kept its latency timer</source>
         <translation>驅動程式接受了低延遲，但保留了其延遲計時器</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="137"/>
+        <location filename="../transport/SerialLineReport.cpp" line="142"/>
         <source>the driver did not take low latency</source>
         <translation>驅動程式未接受低延遲</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="140"/>
+        <location filename="../transport/SerialLineReport.cpp" line="145"/>
         <source>see docs/hardware.md, or use an adapter whose driver offers low latency</source>
         <translation>請參閱 docs/hardware.md，或改用驅動程式支援低延遲的轉接器</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="144"/>
+        <location filename="../transport/SerialLineReport.cpp" line="149"/>
         <source>as root: echo 1 &gt; %1, or the udev rule in docs/hardware.md</source>
         <translation>以 root 執行：echo 1 &gt; %1，或使用 docs/hardware.md 中的 udev 規則</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineReport.cpp" line="148"/>
+        <location filename="../transport/SerialLineReport.cpp" line="153"/>
         <source>The adapter holds received bytes for up to %1 ms before passing them on (%2). Fix: %3.</source>
         <translation>轉接器會將收到的位元組保留最多 %1 ms 才轉交 (%2)。解決方法：%3。</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="107"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="131"/>
         <source>the driver left it off</source>
         <translation>驅動程式仍維持關閉</translation>
     </message>
     <message>
-        <location filename="../transport/SerialLineSetup.cpp" line="176"/>
+        <location filename="../transport/SerialLineSetup.cpp" line="200"/>
         <source>the port does not take %1</source>
         <translation>連接埠不接受 %1</translation>
     </message>

@@ -91,6 +91,11 @@ QString SerialLineReport::lowLatencyText() const
                 .arg(timer);
         return QCoreApplication::translate("opentop::Transport", "low latency: on");
     case LowLatency::Unavailable:
+#ifdef Q_OS_WIN // no program may set it there: the engineer does, once per adapter
+        return QCoreApplication::translate("opentop::Transport",
+                                           "low latency: the driver's setting (FTDI: Latency "
+                                           "Timer 1 ms in Device Manager)");
+#endif
         if (!timer.isEmpty())
             return QCoreApplication::translate("opentop::Transport",
                                                "low latency: not offered by the driver (%1)")

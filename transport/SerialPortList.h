@@ -25,7 +25,9 @@ public:
         QString oneLine() const;
     };
 
+    // USB adapters first, then by name (COM2 before COM10); Windows names are COMn.
     static QVector<Port> available();
+    static bool namedBefore(const QString& a, const QString& b);
     // Shown next to the list: ptys must be typed in.
     static QString typedPathHint();
 };

@@ -1,5 +1,7 @@
 #include "transport/SerialPortList.h"
 
+#include <QStringList>
+#include <algorithm>
 #include <gtest/gtest.h>
 
 using namespace opentop;
@@ -32,4 +34,16 @@ TEST(ConnectionPortListTest, ListingNeverShowsPtysAndHintSaysSo)
         EXPECT_FALSE(p.systemLocation.startsWith(QStringLiteral("/dev/pts/")));
     }
     EXPECT_TRUE(SerialPortList::typedPathHint().contains(QStringLiteral("type")));
+}
+
+TEST(ConnectionPortListTest, PortsAreInTheOrderOfTheirNumbers)
+{
+    QStringList names{QStringLiteral("COM10"),         QStringLiteral("COM2"),
+                      QStringLiteral("/dev/ttyUSB10"), QStringLiteral("/dev/ttyUSB2"),
+                      QStringLiteral("/dev/ttyS0"),    QStringLiteral("COM1")};
+    std::sort(names.begin(), names.end(), &SerialPortList::namedBefore);
+    EXPECT_EQ(names, (QStringList{QStringLiteral("/dev/ttyS0"), QStringLiteral("/dev/ttyUSB2"),
+                                  QStringLiteral("/dev/ttyUSB10"), QStringLiteral("COM1"),
+                                  QStringLiteral("COM2"), QStringLiteral("COM10")}));
+    EXPECT_FALSE(SerialPortList::namedBefore(QStringLiteral("COM3"), QStringLiteral("COM3")));
 }
