@@ -56,3 +56,28 @@ TEST(GuiMonitorE2eTest, RefusesAPollIntervalThatIsNotANumber)
     EXPECT_TRUE(
         QString::fromUtf8(gui.readAllStandardError()).contains(QStringLiteral("--poll-ms")));
 }
+
+// The next start restores the layout the last one saved, trends panel included, before any
+// quantity is chosen: the chart laid itself out with no titles and the window crashed about
+// 3 s after start (issue 29, found by the Windows check; on Linux too).
+TEST(GuiMonitorE2eTest, TheNextStartWithTheTrendsOfTheLastOneOpenRuns)
+{
+    QTemporaryDir config;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
+    const auto run = [&env](const QStringList& extra) {
+        QProcess gui;
+        gui.setProcessEnvironment(env);
+        gui.start(QStringLiteral(OPENTOP_BIN_DIR "/opentop"),
+                  QStringList{QStringLiteral("--sim"), QStringLiteral("dbu200@1,dcpid@7"),
+                              QStringLiteral("--quit-after"), QStringLiteral("5")} +
+                      extra);
+        EXPECT_TRUE(gui.waitForFinished(30000)) << "the GUI did not quit";
+        EXPECT_EQ(gui.exitStatus(), QProcess::NormalExit)
+            << qPrintable(QString::fromUtf8(gui.readAllStandardError()));
+        return gui.exitCode();
+    };
+    EXPECT_EQ(run({QStringLiteral("--monitor-all")}), 0);
+    EXPECT_EQ(run({}), 0) << "the second start, with the first one's layout";
+}

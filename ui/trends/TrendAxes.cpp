@@ -89,6 +89,8 @@ void TrendAxes::setRange(int side, double lo, double hi)
 void TrendAxes::fitTitles(double plotHeight)
 {
     for (int i = 0; i < 2; ++i) {
+        if (m_titles[i].isEmpty())
+            continue; // no quantities yet (a layout restored before any was chosen)
         const QFontMetricsF metrics(m_axes[i]->titleFont());
         QString title = m_titles[i].last();
         for (const QString& candidate : std::as_const(m_titles[i])) {

@@ -37,3 +37,20 @@ TEST(TrendAxesTest, TitlesNameQuantitiesAndUnitAndShortenKeepingTheUnit)
     EXPECT_EQ(TrendAxes::sharedWord({QStringLiteral("Motor current"), QStringLiteral("PWM duty")}),
               QString());
 }
+
+// A trend panel restored from the last session's layout before any quantity is chosen: the
+// chart lays itself out (plotAreaChanged) with no titles at all. It crashed the window, on
+// Linux and on Windows, about 3 s after start (issue 29, found by the Windows check).
+TEST(TrendAxesTest, AChartWithoutQuantitiesFitsNoTitlesAndKeepsRunning)
+{
+    QChart chart;
+    TrendAxes axes(&chart);
+    axes.fitTitles(200);
+    axes.fitTitles(0);
+    EXPECT_EQ(axes.axis(0)->titleText(), QString());
+    EXPECT_EQ(axes.axis(1)->titleText(), QString());
+    // Quantities chosen later are titled as usual.
+    axes.setQuantities({{QStringLiteral("Current speed"), QStringLiteral("r/min")}});
+    axes.fitTitles(1000);
+    EXPECT_EQ(axes.axis(0)->titleText(), QStringLiteral("Current speed [r/min]"));
+}
