@@ -1,6 +1,11 @@
 #!/usr/bin/env bash
-# Proves the README's set-up commands and the Debian package on brand-new minimal Debian 12 roots,
+# Proves the README's set-up commands and the Debian package on brand-new minimal Debian roots,
 # the way a new user's machine starts: nothing installed by hand.
+#
+#   scripts/check-fresh-machine.sh [--suite bookworm|trixie] CHECK...
+#                                            Debian 12 (bookworm, the default) or 13 (trixie);
+#                                            the roots come from the machine's apt sources with
+#                                            their suite names changed to the one asked for
 #
 #   scripts/check-fresh-machine.sh test      README test command (bash scripts/setup.sh test)
 #   scripts/check-fresh-machine.sh gui       README GUI command; the screenshot of the real window
@@ -17,6 +22,10 @@
 #                                            (OPENTOP_SANITIZE_ALL=1)
 #   scripts/check-fresh-machine.sh fuzz      every libFuzzer harness for OPENTOP_FUZZ_SECONDS (60)
 #                                            from its seed corpus (scripts/fuzz.sh)
+#   scripts/check-fresh-machine.sh windows   the Windows programs cross-built in the root and
+#                                            proven under Wine against its Linux programs
+#                                            (scripts/check-windows.sh; skipped in one line
+#                                            without ../shared/toolchains)
 #   scripts/check-fresh-machine.sh test gui package sanitize fuzz   all of them in one root
 #                                            (about 90 min on 2 cores: before a release; CI runs
 #                                            test gui package asan, see .ci/run)
@@ -35,13 +44,26 @@ set -euo pipefail
 { # read to the closing brace before anything runs: editing this file mid-run is harmless
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+suite=bookworm
+if [ "${1:-}" = --suite ]; then
+    suite="${2:-}"
+    shift 2 || true
+fi
+case "$suite" in
+bookworm) debian="Debian 12" ;;
+trixie) debian="Debian 13" ;;
+*)
+    echo "usage: $0 [--suite bookworm|trixie] test|gui|package|asan|tsan|sanitize|fuzz|windows [...]" >&2
+    exit 2
+    ;;
+esac
 forms=("$@")
 ((${#forms[@]})) || forms=(test)
 for f in "${forms[@]}"; do
     case "$f" in
-    test | gui | package | asan | tsan | sanitize | fuzz) ;;
+    test | gui | package | asan | tsan | sanitize | fuzz | windows) ;;
     *)
-        echo "usage: $0 test|gui|package|asan|tsan|sanitize|fuzz [...]" >&2
+        echo "usage: $0 [--suite bookworm|trixie] test|gui|package|asan|tsan|sanitize|fuzz|windows [...]" >&2
         exit 2
         ;;
     esac
@@ -66,6 +88,7 @@ out="$repo/build-fresh"
 mkdir -p "$out"
 work="$(mktemp -d /var/tmp/opentop-fresh.XXXXXX)"
 cache="/var/cache/opentop-fresh"
+[ "$suite" = bookworm ] || cache="$cache/$suite" # one suite's .debs are not another's
 use_cache="${OPENTOP_FRESH_CACHE:-1}"
 mounted=()
 
@@ -131,10 +154,14 @@ bind() { # bind SOURCE TARGET
 
 base_tar="$work/base.tar"
 make_base() {
-    begin "fresh minimal Debian 12 root (mmdebstrap --variant=minbase)"
-    local sources=()
-    [ -f /etc/apt/sources.list.d/debian.sources ] && sources+=(/etc/apt/sources.list.d/debian.sources)
-    [ -s /etc/apt/sources.list ] && sources+=(/etc/apt/sources.list)
+    begin "fresh minimal $debian root (mmdebstrap --variant=minbase)"
+    local sources=() file
+    for file in /etc/apt/sources.list.d/debian.sources /etc/apt/sources.list; do
+        [ -s "$file" ] || continue
+        # The machine's mirrors, for the suite asked for (bookworm-updates -> trixie-updates, ...)
+        sed -E "s/\bbookworm\b/$suite/g" "$file" >"$work/$(basename "$file")"
+        sources+=("$work/$(basename "$file")")
+    done
     local hooks=()
     if [ "$use_cache" = 1 ]; then
         mkdir -p "$cache/base-archives"
@@ -144,7 +171,7 @@ make_base() {
             --customize-hook="sync-out /var/cache/apt/archives $cache/base-archives")
     fi
     mmdebstrap --quiet --variant=minbase --include=ca-certificates,git "${hooks[@]}" \
-        bookworm "$base_tar" "${sources[@]}"
+        "$suite" "$base_tar" "${sources[@]}"
     end
 }
 
@@ -195,7 +222,7 @@ not_blank() {
 
 # --- the checks -------------------------------------------------------------------------------
 commit="$(git -C "$repo" rev-parse --short HEAD)"
-echo "== checking commit $commit of $repo on fresh Debian 12 roots: ${forms[*]}"
+echo "== checking commit $commit of $repo on fresh $debian roots: ${forms[*]}"
 if [ -n "$(git -C "$repo" status --porcelain --untracked-files=no)" ]; then
     echo "   (uncommitted changes in $repo are not part of the check)"
 fi
@@ -326,6 +353,15 @@ if want fuzz; then
     begin "fuzzing: bash scripts/fuzz.sh ${OPENTOP_FUZZ_SECONDS:-60} (every harness, libFuzzer)"
     in_root "$root_a" "cd /src/main && bash scripts/setup.sh build >/dev/null &&
         bash scripts/fuzz.sh ${OPENTOP_FUZZ_SECONDS:-60}" 2>&1 | tee "$out/fuzz.log"
+    end
+fi
+
+if want windows; then
+    # The Linux programs of the README's build serve the bus the Windows ones are checked on.
+    begin "Windows: bash scripts/check-windows.sh (cross build, Wine: TCP, COM port, GUI, installer)"
+    in_root "$root_a" 'cd /src/main && bash scripts/setup.sh build >/dev/null &&
+        OPENTOP_GUI_QUIT_AFTER=45 bash scripts/check-windows.sh' 2>&1 | tee "$out/windows.log"
+    cp "$root_a/src/main/build-win/opentop-wine.png" "$out/" 2>/dev/null || true
     end
 fi
 
