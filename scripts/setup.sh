@@ -44,9 +44,17 @@ packages=(
     fonts-noto-cjk qt6-translations-l10n
 )
 
+# Installed, or provided by an installed package (Debian 13's qt6-base-dev provides
+# libqt6opengl6-dev, which is no real package there: asking dpkg for it says "not installed").
+# grep without -q reads all its input, so that pipefail sees no SIGPIPE.
+installed() {
+    dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep "install ok installed" >/dev/null ||
+        dpkg-query -W -f='${Status}\t${Provides}\n' 2>/dev/null | grep "^install ok installed" |
+        cut -f2 | tr ',' '\n' | sed 's/(.*//; s/:.*//; s/ //g' | grep -x -- "$1" >/dev/null
+}
 missing=()
 for p in "${packages[@]}"; do
-    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    if ! installed "$p"; then
         missing+=("$p")
     fi
 done

@@ -170,7 +170,7 @@ TEST_F(MainWindowAccessTest, AnOperatorLogsInRunsOnlyApprovedRecipesAndCannotLea
 
     // A badge: name, Tab, password, Enter, into whatever has the keys.
     window->activateWindow();
-    QApplication::setActiveWindow(window.get());
+    ASSERT_TRUE(QTest::qWaitForWindowActive(window.get()));
     view->focusSerial(); // nobody logged in: the keys go to the login
     ASSERT_TRUE(waitFor([&] { return login->userField()->hasFocus(); }, 3000));
     typeKeys(QStringLiteral("olga"));
