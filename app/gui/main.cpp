@@ -11,6 +11,7 @@
 #include "transport/ModbusClient.h"
 #include "transport/TrafficLog.h"
 #include "ui/connection/ConnectionDialog.h"
+#include "ui/i18n/LanguageFont.h"
 #include "ui/main/MainWindow.h"
 #include "ui/pages/EditorRegistry.h"
 
@@ -55,6 +56,7 @@ int main(int argc, char* argv[])
         std::fprintf(stderr, "opentop: %s\n", qPrintable(languageError));
         return 2;
     }
+    opentop::LanguageFont::apply(opentop::Language::current());
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QApplication::translate("main", "Commissioning tool for RS-485 Modbus-RTU motor drives."));
