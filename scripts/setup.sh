@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# OpenTOP set-up for a Debian 12 machine, run as root from the source tree.
+# OpenTOP set-up for a Debian 12 or 13 machine, run as root from the source tree.
 #   scripts/setup.sh gui   install what is missing, build, open the GUI on a simulated bus
 #   scripts/setup.sh test  install what is missing, build, run the whole test suite
 #   scripts/setup.sh build install what is missing and build (for scripts such as the package check)
