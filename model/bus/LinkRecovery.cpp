@@ -86,6 +86,11 @@ void LinkRecovery::giveUp()
     if (!m_lost || m_stopped)
         return;
     const qint64 lostMs = m_since.elapsed();
+    // A coarse timer may fire up to 5 % early: "gave up after 300 s" must mean it lasted that.
+    if (lostMs < m_giveUpMs) {
+        m_giveUp.start(int(std::min<qint64>(m_giveUpMs - lostMs, std::numeric_limits<int>::max())));
+        return;
+    }
     stop();
     emit gaveUp(lostMs, m_lastError);
 }
